@@ -1,0 +1,13 @@
+#pragma once
+// The `kmr` commands. Each takes the arguments after its name, writes its result to stdout and
+// returns the exit status: 0 success, 1 a check failed, 2 bad input (message on stderr).
+#include <string>
+#include <vector>
+
+namespace kmr::cli {
+
+using Argv = std::vector<std::string>;
+
+int audit_command(const Argv& args);
+
+}  // namespace kmr::cli

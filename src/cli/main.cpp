@@ -1,0 +1,52 @@
+// kmr: the command-line entry point. Dispatches to one command per file (cli/commands.hpp).
+#include <exception>
+#include <iostream>
+#include <string>
+
+#include "cli/commands.hpp"
+#include "exact/error.hpp"
+
+namespace {
+
+struct Command {
+  const char* name;
+  const char* summary;
+  int (*run)(const kmr::cli::Argv&);
+};
+
+const Command kCommands[] = {
+    {"audit", "check the thesis's claims on built-in defaults and report figures", kmr::cli::audit_command},
+};
+
+int usage(std::ostream& out) {
+  out << "usage: kmr <command> [options]   (kmr <command> --help for details)\n\ncommands:\n";
+  for (const Command& c : kCommands) out << "  " << c.name << std::string(12 - std::string(c.name).size(), ' ') << c.summary << "\n";
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    usage(std::cerr);
+    return 2;
+  }
+  std::string name = argv[1];
+  if (name == "--help" || name == "-h" || name == "help") return usage(std::cout);
+  kmr::cli::Argv args(argv + 2, argv + argc);
+  for (const Command& c : kCommands) {
+    if (name != c.name) continue;
+    try {
+      return c.run(args);
+    } catch (const kmr::InputError& e) {
+      std::cerr << "kmr " << name << ": error: " << e.what() << "\n";
+      return 2;
+    } catch (const std::exception& e) {
+      std::cerr << "kmr " << name << ": internal error: " << e.what() << "\n";
+      return 3;
+    }
+  }
+  std::cerr << "kmr: unknown command '" << name << "'\n";
+  usage(std::cerr);
+  return 2;
+}
