@@ -94,6 +94,15 @@ TEST(RootsOracle, A2_1_LatticeIsolation_HandPicked) {
   // The sign trap: negative leading coefficient, odd degree, odd degree differences.
   Polynomial trap = -(t - Polynomial(3)) * (t + Polynomial(1)) * (t * t * t - Polynomial(2) * t + Polynomial(7));
   for (int b : {0, 4, 10}) expect_agrees(trap, b, kEverywhereLo, kEverywhereHi);
+  // Abnormal remainder sequences, where a degree drops by 2 and the divisor's leading coefficient is
+  // negative: t^4 + t − 1 gives p2 = −(3/4)t + 1, and prem(p1, p2) carries lc(p2)^3 < 0.
+  for (int c : {-1, -3, 1}) {
+    Polynomial q = power(t, 4) + t + Polynomial(c);
+    for (int b : {0, 4, 10}) expect_agrees(q, b, kEverywhereLo, kEverywhereHi);
+  }
+  EXPECT_EQ(LatticeRootSolver(power(t, 4) + t - Polynomial(1), 0).distinct_real_roots(), 2);
+  Polynomial q6 = power(t, 6) - Integer(5) * t * t + t + Polynomial(1);
+  for (int b : {0, 4, 10}) expect_agrees(q6, b, kEverywhereLo, kEverywhereHi);
   // Constants have no roots.
   EXPECT_EQ(expect_agrees(Polynomial(7), 10, kEverywhereLo, kEverywhereHi), 0u);
   EXPECT_EQ(expect_agrees(Polynomial(-pow2(600)), 10, kEverywhereLo, kEverywhereHi), 0u);
@@ -131,11 +140,12 @@ Integer random_integer(std::mt19937_64& rng, unsigned max_bits) {
 TEST(RootsOracle, A2_1_LatticeIsolation_RandomCoefficients) {
   RecordProperty("claim", "A2.1-lattice-isolation");
   std::mt19937_64 rng(20121);
-  for (int iter = 0; iter < 150; ++iter) {
+  for (int iter = 0; iter < 300; ++iter) {
     int degree = static_cast<int>(rng() % 17);
     unsigned bits = iter % 3 == 0 ? 520 : (iter % 3 == 1 ? 64 : 8);
     std::vector<Integer> c;
-    for (int i = 0; i <= degree; ++i) c.push_back(random_integer(rng, bits));
+    bool sparse = iter % 2 == 1;  // many zero coefficients: abnormal remainder sequences
+    for (int i = 0; i <= degree; ++i) c.push_back(sparse && rng() % 2 ? Integer(0) : random_integer(rng, bits));
     if (c.back().is_zero()) c.back() = 1;
     Polynomial p(c);
     int b = static_cast<int>(rng() % 16);
