@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include <gmp.h>
+
 #include "exact/error.hpp"
 
 namespace kmr::exact {
@@ -12,6 +14,15 @@ namespace {
 std::int64_t trailing_zeros(const Integer& m) { return static_cast<std::int64_t>(boost::multiprecision::lsb(abs(m))); }
 
 constexpr std::int64_t kMaxDecimalExponent = 100000;
+
+// The integer spelled by a nonempty string of decimal digits, always in base 10. (Constructing an
+// mpz_int from a string auto-detects the base, so "0375" would be read as octal 253 and "09" refused.)
+Integer from_decimal_digits(const std::string& digits) {
+  Integer v;
+  if (mpz_set_str(v.backend().data(), digits.c_str(), 10) != 0)
+    throw InputError("not a decimal integer: '" + digits + "'");
+  return v;
+}
 }  // namespace
 
 Integer parse_integer(std::string_view text) {
@@ -20,7 +31,7 @@ Integer parse_integer(std::string_view text) {
   if (i == text.size()) throw InputError("not an integer: '" + std::string(text) + "'");
   for (std::size_t j = i; j < text.size(); ++j)
     if (text[j] < '0' || text[j] > '9') throw InputError("not an integer: '" + std::string(text) + "'");
-  Integer v(std::string(text.substr(i)));
+  Integer v = from_decimal_digits(std::string(text.substr(i)));
   return text[0] == '-' ? Integer(-v) : v;
 }
 
@@ -126,7 +137,7 @@ Dyadic Dyadic::parse(std::string_view text) {
     exp10 += static_cast<std::int64_t>(parse_integer(e).convert_to<long long>());
   }
   if (exp10 > kMaxDecimalExponent || exp10 < -kMaxDecimalExponent) throw bad("exponent out of range");
-  Integer n(digits);
+  Integer n = from_decimal_digits(digits);
   if (negative) n = -n;
   if (n.is_zero()) return Dyadic();
   if (exp10 >= 0) return Dyadic(n * boost::multiprecision::pow(Integer(10), static_cast<unsigned>(exp10)));
