@@ -7,6 +7,7 @@
 
 #include "exact/error.hpp"
 #include "poly/polynomial.hpp"
+#include "small_polynomial.hpp"
 
 namespace {
 using kmr::ContractError;
@@ -15,11 +16,7 @@ using kmr::exact::Dyadic;
 using kmr::exact::Integer;
 using namespace kmr::poly;
 
-Polynomial P(std::initializer_list<long long> c) {
-  std::vector<Integer> v;
-  for (long long x : c) v.emplace_back(x);
-  return Polynomial(v);
-}
+using kmr::poly::testing::P;
 const Polynomial t = Polynomial::identity();
 
 TEST(Polynomial, CanonicalForm) {

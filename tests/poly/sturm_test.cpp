@@ -3,6 +3,7 @@
 
 #include "exact/error.hpp"
 #include "poly/sturm.hpp"
+#include "small_polynomial.hpp"
 
 namespace {
 using kmr::InputError;
@@ -10,11 +11,7 @@ using kmr::exact::Dyadic;
 using kmr::exact::Integer;
 using namespace kmr::poly;
 
-Polynomial P(std::initializer_list<long long> c) {
-  std::vector<Integer> v;
-  for (long long x : c) v.emplace_back(x);
-  return Polynomial(v);
-}
+using kmr::poly::testing::P;
 
 TEST(Sturm, A2_1_HandDerivedSequence) {
   RecordProperty("claim", "A2.1-sturm-count");
