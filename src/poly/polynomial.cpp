@@ -138,6 +138,8 @@ DoubleCoefficients double_coefficients(const Polynomial& p) {
 }
 
 int filtered_sign_at(const Polynomial& p, const DoubleCoefficients& approx, const Integer& m, long long s) {
+  KMR_CHECK(s >= 0, "filtered_sign_at needs s >= 0");
+  KMR_CHECK(!approx.usable || approx.c.size() == p.coefficients().size(), "filtered_sign_at: approx is not from p");
   int n = p.degree();
   if (approx.usable && n >= 0 && s <= 1000 && exact::bit_length(m) <= 53) {
     // x = m·2^−s is exactly a (normal or zero) double.

@@ -96,6 +96,8 @@ TEST(Polynomial, DoubleFilterEqualsExactSign) {
   EXPECT_EQ(filtered_sign_at(r, double_coefficients(r), (Integer(1) << 1100), 1101), 0);
   EXPECT_EQ(filtered_sign_at(r, double_coefficients(r), (Integer(1) << 60) + 1, 61), 1);
   EXPECT_EQ(filtered_sign_at(r, double_coefficients(r), Integer(0), 0), -1);
+  EXPECT_THROW(filtered_sign_at(r, double_coefficients(r), Integer(1), -1), ContractError);
+  EXPECT_THROW(filtered_sign_at(r, double_coefficients(P({1, 2, 3})), Integer(1), 1), ContractError);
   // Random polynomials, points near their roots: always equal to the exact sign.
   std::mt19937_64 rng(99);
   for (int i = 0; i < 3000; ++i) {
