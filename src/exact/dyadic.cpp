@@ -3,8 +3,6 @@
 #include <cmath>
 #include <limits>
 
-#include <gmp.h>
-
 #include "exact/error.hpp"
 
 namespace kmr::exact {
@@ -15,13 +13,11 @@ std::int64_t trailing_zeros(const Integer& m) { return static_cast<std::int64_t>
 
 constexpr std::int64_t kMaxDecimalExponent = 100000;
 
-// The integer spelled by a nonempty string of decimal digits, always in base 10. (Constructing an
-// mpz_int from a string auto-detects the base, so "0375" would be read as octal 253 and "09" refused.)
-Integer from_decimal_digits(const std::string& digits) {
-  Integer v;
-  if (mpz_set_str(v.backend().data(), digits.c_str(), 10) != 0)
-    throw InputError("not a decimal integer: '" + digits + "'");
-  return v;
+// Decimal digits to an Integer. Leading zeros are stripped first: Boost/GMP would read "0123" as octal.
+Integer from_decimal_digits(std::string_view digits) {
+  std::size_t first = digits.find_first_not_of('0');
+  if (first == std::string_view::npos) return Integer(0);
+  return Integer(std::string(digits.substr(first)));
 }
 }  // namespace
 
@@ -31,7 +27,7 @@ Integer parse_integer(std::string_view text) {
   if (i == text.size()) throw InputError("not an integer: '" + std::string(text) + "'");
   for (std::size_t j = i; j < text.size(); ++j)
     if (text[j] < '0' || text[j] > '9') throw InputError("not an integer: '" + std::string(text) + "'");
-  Integer v = from_decimal_digits(std::string(text.substr(i)));
+  Integer v = from_decimal_digits(text.substr(i));
   return text[0] == '-' ? Integer(-v) : v;
 }
 
