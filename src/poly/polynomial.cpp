@@ -1,7 +1,10 @@
 #include "poly/polynomial.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
+
+#include <gmp.h>
 
 #include "exact/error.hpp"
 
@@ -120,6 +123,42 @@ int Polynomial::sign_at(const Integer& m, long long s) const {
 int Polynomial::sign_at(const Dyadic& t) const {
   if (t.exponent() >= 0) return evaluate(t.floor()).sign();
   return sign_at(t.mantissa(), -t.exponent());
+}
+
+DoubleCoefficients double_coefficients(const Polynomial& p) {
+  DoubleCoefficients a;
+  a.usable = true;
+  for (const auto& c : p.coefficients()) {
+    // mpz_get_d truncates: |fl(c) − c| ≤ 2^−52·|c|. Keep far from overflow (< 2^1000).
+    if (exact::bit_length(c) > 1000) a.usable = false;
+    a.c.push_back(a.usable ? mpz_get_d(c.backend().data()) : 0.0);
+  }
+  if (!a.usable) a.c.clear();
+  return a;
+}
+
+int filtered_sign_at(const Polynomial& p, const DoubleCoefficients& approx, const Integer& m, long long s) {
+  KMR_CHECK(s >= 0, "filtered_sign_at needs s >= 0");
+  KMR_CHECK(!approx.usable || approx.c.size() == p.coefficients().size(), "filtered_sign_at: approx is not from p");
+  int n = p.degree();
+  if (approx.usable && n >= 0 && s <= 1000 && exact::bit_length(m) <= 53) {
+    // x = m·2^−s is exactly a (normal or zero) double.
+    double x = std::ldexp(mpz_get_d(m.backend().data()), -static_cast<int>(s));
+    double ax = std::fabs(x);
+    double y = approx.c.back(), bound = std::fabs(approx.c.back());
+    for (int i = n - 1; i >= 0; --i) {
+      y = y * x + approx.c[static_cast<std::size_t>(i)];
+      bound = bound * ax + std::fabs(approx.c[static_cast<std::size_t>(i)]);
+    }
+    // |y − p(x)| ≤ (γ_2n + 2^−52(1 + γ_2n))·Σ|c̃i||x|^i ≤ (2n + 2)·2^−51·bound (generously), as long as
+    // nothing overflowed and bound ≥ 2^−900 (so underflow errors, ≤ 2n·2^−1074, are negligible).
+    double err = (2.0 * n + 2.0) * std::ldexp(bound, -51);
+    if (std::isfinite(y) && std::isfinite(bound) && bound >= std::ldexp(1.0, -900)) {
+      if (y > err) return 1;
+      if (y < -err) return -1;
+    }
+  }
+  return p.sign_at(m, s);
 }
 
 std::string Polynomial::to_string() const {

@@ -6,6 +6,9 @@
 //  * sign_at(t) is the exact sign of p at a dyadic t (evaluated homogeneously in integers).
 //  * pseudo_remainder(a, b) = lc(b)^(deg a − deg b + 1)·a mod b, exactly (Knuth's prem; note the
 //    factor's sign: it may flip the sign of the true remainder, see sturm.hpp).
+//  * filtered_sign_at(p, double_coefficients(p), m, s) == p.sign_at(m, s) always: a double-precision
+//    evaluation whose rigorous forward-error bound certifies the sign, with exact fallback whenever
+//    it does not (bound too large, overflow, underflow, t not exactly a double).
 //  * gcd(a, b) is primitive with a positive leading coefficient; square_free_part(p) has the same
 //    distinct real (and complex) roots as p, each simple.
 #include <string>
@@ -63,6 +66,16 @@ class Polynomial {
   void trim();
   std::vector<Integer> c_;
 };
+
+// A floating-point filter for Polynomial::sign_at: the coefficients of p rounded once to doubles
+// (usable = false when a coefficient does not fit a double comfortably).
+struct DoubleCoefficients {
+  std::vector<double> c;
+  bool usable = false;
+};
+DoubleCoefficients double_coefficients(const Polynomial& p);
+// Exactly p.sign_at(m, s) (s ≥ 0), usually decided in double arithmetic; `approx` must come from p.
+int filtered_sign_at(const Polynomial& p, const DoubleCoefficients& approx, const Integer& m, long long s);
 
 Polynomial pseudo_remainder(const Polynomial& a, const Polynomial& b);
 // a / b when b divides a exactly over the rationals and the quotient has integer coefficients

@@ -18,21 +18,15 @@ int variations(const std::vector<int>& signs) {
 
 SturmSequence::SturmSequence(const Polynomial& p) {
   if (p.is_zero()) throw InputError("identically zero polynomial: it has no isolated roots");
-  seq_.push_back(square_free_part(p));
-  if (seq_[0].degree() > 0) seq_.push_back(seq_[0].derivative());
-  while (seq_.size() >= 2 && seq_.back().degree() > 0) {
-    const Polynomial& a = seq_[seq_.size() - 2];
-    const Polynomial& b = seq_.back();
-    Polynomial r = pseudo_remainder(a, b);
-    if (r.is_zero()) break;  // cannot happen for a square-free p (gcd(p, p') is constant)
-    // prem = lc(b)^(d+1)·rem: undo a negative factor so that r is a positive multiple of rem.
-    int d1 = a.degree() - b.degree() + 1;
-    if (b.leading().sign() < 0 && d1 % 2 == 1) r = -r;
-    Integer g = r.content();  // positive: dividing keeps signs
-    Polynomial next = -r;
-    if (g != 1) next = exact_quotient(next, Polynomial(g));
-    seq_.push_back(std::move(next));
-  }
+  // Most certificates are square-free: build the sequence from p's primitive part directly. If it
+  // ends in a nonconstant member, that member is gcd(p, p') (up to a constant), p has a multiple
+  // root, and the sequence is rebuilt from the square-free part.
+  Polynomial first = p.primitive_part();
+  if (first.sign() < 0) first = -first;
+  build(first);
+  if (seq_.back().degree() > 0) build(square_free_part(p));
+  KMR_CHECK(seq_.back().degree() <= 0, "Sturm sequence of a square-free polynomial ends in a constant");
+  for (const auto& q : seq_) approx_.push_back(double_coefficients(q));
   std::vector<int> plus, minus;
   for (const auto& q : seq_) {
     plus.push_back(q.sign());
@@ -42,10 +36,29 @@ SturmSequence::SturmSequence(const Polynomial& p) {
   v_minus_inf_ = variations(minus);
 }
 
+void SturmSequence::build(const Polynomial& first) {
+  seq_.clear();
+  seq_.push_back(first);
+  if (seq_[0].degree() > 0) seq_.push_back(seq_[0].derivative());
+  while (seq_.size() >= 2 && seq_.back().degree() > 0) {
+    const Polynomial& a = seq_[seq_.size() - 2];
+    const Polynomial& b = seq_.back();
+    Polynomial r = pseudo_remainder(a, b);
+    if (r.is_zero()) break;  // b = gcd(first, first') up to a constant: first is not square-free
+    // prem = lc(b)^(d+1)·rem: undo a negative factor so that r is a positive multiple of rem.
+    int d1 = a.degree() - b.degree() + 1;
+    if (b.leading().sign() < 0 && d1 % 2 == 1) r = -r;
+    Integer g = r.content();  // positive: dividing keeps signs
+    Polynomial next = -r;
+    if (g != 1) next = exact_quotient(next, Polynomial(g));
+    seq_.push_back(std::move(next));
+  }
+}
+
 int SturmSequence::variations_at(const Integer& m, long long s) const {
   std::vector<int> signs;
   signs.reserve(seq_.size());
-  for (const auto& q : seq_) signs.push_back(q.sign_at(m, s));
+  for (std::size_t i = 0; i < seq_.size(); ++i) signs.push_back(filtered_sign_at(seq_[i], approx_[i], m, s));
   return variations(signs);
 }
 
@@ -56,8 +69,17 @@ int SturmSequence::variations_at(const Dyadic& t) const {
 
 int SturmSequence::roots_below(const Integer& m, long long s) const {
   // V(−∞) − V(t) counts the distinct roots in (−∞, t]; subtract t itself if it is a root.
-  int le = v_minus_inf_ - variations_at(m, s);
-  return seq_[0].sign_at(m, s) == 0 ? le - 1 : le;
+  int last = 0, v = 0;
+  bool root_at_t = false;
+  for (std::size_t i = 0; i < seq_.size(); ++i) {
+    int sg = filtered_sign_at(seq_[i], approx_[i], m, s);
+    if (i == 0) root_at_t = sg == 0;
+    if (sg == 0) continue;
+    if (last != 0 && sg != last) ++v;
+    last = sg;
+  }
+  int le = v_minus_inf_ - v;
+  return root_at_t ? le - 1 : le;
 }
 
 int SturmSequence::roots_below(const Dyadic& t) const {
@@ -68,7 +90,7 @@ int SturmSequence::roots_below(const Dyadic& t) const {
 Integer lattice_ceil(const Dyadic& t, int bits) { return t.shifted(bits).ceil(); }
 
 LatticeRootSolver::LatticeRootSolver(const Polynomial& p, int lattice_bits)
-    : p_(p), bits_(lattice_bits), sturm_(p) {
+    : p_(p), p_approx_(double_coefficients(p)), bits_(lattice_bits), sturm_(p) {
   if (lattice_bits < 0) throw InputError("lattice bits must be >= 0");
   // Cauchy bound: |r| < 1 + max|ci/cn| ≤ 2^(bitlen(max|ci|) − bitlen(|cn|) + 2).
   const Polynomial& q = sturm_.square_free();
@@ -83,7 +105,11 @@ int LatticeRootSolver::roots_below_lattice(const Integer& k) const {
   return sturm_.roots_below(k, bits_);
 }
 
-int LatticeRootSolver::sign_before_lattice(const Integer& k) const { return sign_before(p_, lattice_point(k)); }
+int LatticeRootSolver::sign_before_lattice(const Integer& k) const {
+  // p(kδ) ≠ 0 decides at once (filtered); otherwise the first non-vanishing derivative does.
+  int s = filtered_sign_at(p_, p_approx_, k, bits_);
+  return s != 0 ? s : sign_before(p_, lattice_point(k));
+}
 
 bool LatticeRootSolver::sign_changes_across(const Integer& k) const {
   return sign_before_lattice(k) != sign_before_lattice(k + 1);

@@ -6,6 +6,8 @@
 //    roots. Its members are positive multiples of the classical sequence p, p', −rem(p, p'), ...:
 //    a Knuth pseudo-remainder carries the factor lc^(d+1), whose sign we undo when lc < 0 and
 //    d+1 is odd, so sign variations equal those of the true Sturm sequence.
+//  * Sign evaluations go through a double-precision filter with exact fallback
+//    (filtered_sign_at in polynomial.hpp), so every sign, and hence every count, is exact.
 //  * count_roots(lo, hi) = number of distinct real roots in [lo, hi), exactly, for dyadic lo < hi.
 //  * LatticeRootSolver with lattice δ = 2^−b reports, for a window [T0, T1), every lattice interval
 //    [kδ, (k+1)δ) with T0 ≤ kδ < T1 that holds a real root, with its number of distinct roots,
@@ -41,7 +43,9 @@ class SturmSequence {
   int count_roots(const Dyadic& lo, const Dyadic& hi) const { return roots_below(hi) - roots_below(lo); }
 
  private:
+  void build(const Polynomial& first);  // the remainder sequence from `first` (stops at a zero remainder)
   std::vector<Polynomial> seq_;
+  std::vector<DoubleCoefficients> approx_;  // seq_ rounded to doubles, for the sign filter
   int v_minus_inf_ = 0, v_plus_inf_ = 0;
 };
 
@@ -83,6 +87,7 @@ class LatticeRootSolver {
   std::pair<Integer, Integer> clamp_range(const Integer& lo, const Integer& hi) const;
 
   Polynomial p_;
+  DoubleCoefficients p_approx_;
   int bits_;
   SturmSequence sturm_;
   Integer root_bound_k_;  // every real root r has |r| < root_bound_k_·δ

@@ -1,0 +1,151 @@
+// Root-solver benchmark, thesis §2.4 input: four points moving linearly in 3D, each coordinate
+// x(t) = X + V·2^12·t with X = x0·2^20 (B_ℓ = 20 position bits) and V = v·2^8 (B_v = 8 velocity bits),
+// x0, v uniform in [−1, 1]; certificate = orientation_value of the four points (a cubic in t);
+// lattice δ = 2^−10, horizon M_t = 2^27, query next_failure_after(0).
+//
+// Compared, on the same polynomials in the same run:
+//  * kmr:  LatticeRootSolver(p, 10).next_failure_after(0, 2^27) (builds the Sturm sequence too);
+//  * CGAL: Algebraic_kernel_d_1<CORE::BigInt>::Solve_1 (isolation with multiplicities, a fresh
+//          kernel per polynomial so no cache is shared) and the first odd-multiplicity root ≥ 0
+//          and < 2^27, by exact comparison with the bounds.
+// Prints Google Benchmark timings, then per-polynomial medians and the ratio kmr / CGAL
+// (target ≤ 0.5). Before timing, every kmr answer is checked against the CGAL oracle when it is
+// built (KMR_BENCH_WITH_ORACLE), and the run aborts on a disagreement.
+#include <benchmark/benchmark.h>
+
+#include <CGAL/Algebraic_kernel_d_1.h>
+#include <CGAL/CORE_BigInt.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "geometry/predicates.hpp"
+#include "poly/sturm.hpp"
+#ifdef KMR_BENCH_WITH_ORACLE
+#include "cgal_roots.hpp"
+#endif
+
+namespace {
+
+using kmr::exact::Dyadic;
+using kmr::exact::Integer;
+using kmr::poly::LatticeRootSolver;
+using kmr::poly::Polynomial;
+using AK = CGAL::Algebraic_kernel_d_1<CORE::BigInt>;
+
+constexpr int kLatticeBits = 10;
+constexpr int kCount = 1000;
+
+std::vector<Polynomial> make_certificates(int count, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<long long> pos(-(1LL << 20), 1LL << 20), vel(-(1LL << 8), 1LL << 8);
+  std::vector<Polynomial> out;
+  while (static_cast<int>(out.size()) < count) {
+    std::array<kmr::geometry::Point<3, Polynomial>, 4> pts;
+    for (auto& p : pts)
+      for (auto& x : p) x = Polynomial(std::vector<Integer>{Integer(pos(rng)), Integer(vel(rng)) << 12});
+    Polynomial c = kmr::geometry::orientation_value(pts[0], pts[1], pts[2], pts[3]);
+    if (!c.is_zero()) out.push_back(std::move(c));
+  }
+  return out;
+}
+
+const std::vector<Polynomial>& certificates() {
+  static const std::vector<Polynomial> c = make_certificates(kCount, 2012);
+  return c;
+}
+
+AK::Polynomial_1 to_cgal(const Polynomial& p) {
+  std::vector<CORE::BigInt> cs;
+  for (const auto& c : p.coefficients()) cs.emplace_back(c.backend().data());
+  return AK::Polynomial_1(cs.begin(), cs.end());
+}
+
+const std::vector<AK::Polynomial_1>& cgal_certificates() {
+  static const std::vector<AK::Polynomial_1> c = [] {
+    std::vector<AK::Polynomial_1> v;
+    for (const auto& p : certificates()) v.push_back(to_cgal(p));
+    return v;
+  }();
+  return c;
+}
+
+const Dyadic kFrom(0), kHorizon = Dyadic::pow2(27);
+
+bool ours(const Polynomial& p) {
+  LatticeRootSolver solver(p, kLatticeBits);
+  return solver.next_failure_after(kFrom, kHorizon).has_value();
+}
+
+bool cgal(const AK::Polynomial_1& p) {
+  AK ak;
+  std::vector<std::pair<AK::Algebraic_real_1, AK::Multiplicity_type>> roots;
+  ak.solve_1_object()(p, std::back_inserter(roots));
+  const AK::Bound lo(0), hi(CORE::BigInt(1) << 27);
+  for (const auto& [r, m] : roots) {
+    if (m % 2 == 0) continue;
+    if (ak.compare_1_object()(r, lo) == CGAL::SMALLER) continue;
+    return ak.compare_1_object()(r, hi) == CGAL::SMALLER;
+  }
+  return false;
+}
+
+void BM_kmr_next_failure_after(benchmark::State& state) {
+  const auto& ps = certificates();
+  for (auto _ : state)
+    for (const auto& p : ps) benchmark::DoNotOptimize(ours(p));
+  state.SetItemsProcessed(state.iterations() * static_cast<long long>(ps.size()));
+}
+void BM_cgal_isolate_first_odd_root(benchmark::State& state) {
+  const auto& ps = cgal_certificates();
+  for (auto _ : state)
+    for (const auto& p : ps) benchmark::DoNotOptimize(cgal(p));
+  state.SetItemsProcessed(state.iterations() * static_cast<long long>(ps.size()));
+}
+BENCHMARK(BM_kmr_next_failure_after)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+BENCHMARK(BM_cgal_isolate_first_odd_root)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
+
+template <class F>
+double median_ns(F&& f, std::size_t n) {
+  std::vector<double> t;
+  for (std::size_t i = 0; i < n; ++i) {
+    auto a = std::chrono::steady_clock::now();
+    for (int rep = 0; rep < 5; ++rep) benchmark::DoNotOptimize(f(i));
+    auto b = std::chrono::steady_clock::now();
+    t.push_back(std::chrono::duration<double, std::nano>(b - a).count() / 5);
+  }
+  std::nth_element(t.begin(), t.begin() + static_cast<long>(n / 2), t.end());
+  return t[n / 2];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const auto& ps = certificates();
+  const auto& cs = cgal_certificates();
+  int failures = 0;
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+#ifdef KMR_BENCH_WITH_ORACLE
+    auto oracle = kmr::oracles::oracle_real_roots(ps[i].coefficients(), kLatticeBits);
+    auto want = kmr::oracles::first_sign_change(oracle, Integer(0), Integer(1) << (27 + kLatticeBits));
+    auto have = LatticeRootSolver(ps[i], kLatticeBits).next_failure_after(kFrom, kHorizon);
+    if (want != have) {
+      std::fprintf(stderr, "DISAGREEMENT on certificate %zu: %s\n", i, ps[i].to_string().c_str());
+      return 1;
+    }
+#endif
+    failures += ours(ps[i]);
+  }
+  std::printf("certificates: %zu (cubics), with a failure in [0, 2^27): %d\n", ps.size(), failures);
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  double a = median_ns([&](std::size_t i) { return ours(ps[i]); }, ps.size());
+  double b = median_ns([&](std::size_t i) { return cgal(cs[i]); }, cs.size());
+  std::printf("median per certificate: kmr %.1f us, CGAL %.1f us, ratio kmr/CGAL = %.3f (target <= 0.5): %s\n",
+              a / 1e3, b / 1e3, a / b, a / b <= 0.5 ? "met" : "NOT met");
+  return 0;
+}

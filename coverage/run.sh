@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Line and branch coverage of the unit, property and fuzz-replay tests.
+# Usage: coverage/run.sh [THRESHOLD_LINES_PERCENT]   (default 90, applied to src/exact + src/poly)
+# Builds build-coverage/ with -DKMR_COVERAGE=ON (gcc --coverage, -O0), runs ctest -L 'unit|prop|fuzz'
+# (without the clang libFuzzer build), captures with lcov (branch coverage on), keeps src/ only
+# (tests, proptests, fuzz harnesses, system and third-party headers removed), writes the HTML report
+# to coverage/out/, prints line and branch percentages for src/exact, src/poly, both, and all of
+# src/, and exits 1 if exact+poly line coverage is under the threshold.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+threshold=${1:-90}
+dir=build-coverage
+# Branch coverage on; compiler-generated exception-path branches are excluded (they are not
+# decisions of the code under test, and every throwing call would otherwise count as one).
+rc=(--rc lcov_branch_coverage=1 --rc geninfo_no_exception_branch=1)
+cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DKMR_COVERAGE=ON -DKMR_ORACLES=OFF -DKMR_BENCH=OFF \
+  -DKMR_FUZZ_SEEDED=OFF >/dev/null
+cmake --build "$dir" -j 2
+lcov "${rc[@]}" --quiet --zerocounters --directory "$dir"
+ctest --test-dir "$dir" -L 'unit|prop|fuzz' -j 2 --output-on-failure --timeout 900
+mkdir -p coverage/out
+raw=coverage/out/raw.info
+all=coverage/out/kmr.info
+lcov "${rc[@]}" --quiet --capture --directory "$dir" --output-file "$raw"
+lcov "${rc[@]}" --quiet --extract "$raw" "$PWD/src/*" --output-file "$all"
+genhtml "${rc[@]}" --quiet --branch-coverage --output-directory coverage/out "$all" >/dev/null
+# Percentages from the filtered tracefile: LF/LH lines, BRF/BRH branches, per path prefix.
+summary() {  # summary LABEL PREFIX...
+  local label=$1
+  shift
+  awk -v label="$label" -v prefixes="$*" '
+    BEGIN { n = split(prefixes, pre, " ") }
+    /^SF:/ { file = substr($0, 4); keep = 0; for (i = 1; i <= n; ++i) if (index(file, pre[i]) == 1) keep = 1 }
+    keep && /^LF:/ { lf += substr($0, 4) } keep && /^LH:/ { lh += substr($0, 4) }
+    keep && /^BRF:/ { bf += substr($0, 5) } keep && /^BRH:/ { bh += substr($0, 5) }
+    END {
+      lp = lf ? 100 * lh / lf : 0; bp = bf ? 100 * bh / bf : 0
+      printf "%-12s lines %6.2f%% (%d/%d)   branches %6.2f%% (%d/%d)\n", label, lp, lh, lf, bp, bh, bf
+      printf "%.2f\n", lp > "/dev/stderr"
+    }' "$all"
+}
+summary "src/exact" "$PWD/src/exact/" 2>/dev/null
+summary "src/poly" "$PWD/src/poly/" 2>/dev/null
+summary "exact+poly" "$PWD/src/exact/" "$PWD/src/poly/" 2>/dev/null
+summary "src (all)" "$PWD/src/" 2>/dev/null
+core=$(summary "exact+poly" "$PWD/src/exact/" "$PWD/src/poly/" 2>&1 >/dev/null)
+echo "HTML report: coverage/out/index.html"
+if awk -v c="$core" -v t="$threshold" 'BEGIN { exit !(c < t) }'; then
+  echo "FAIL: exact+poly line coverage ${core}% < ${threshold}%"
+  exit 1
+fi
+echo "OK: exact+poly line coverage ${core}% >= ${threshold}%"
