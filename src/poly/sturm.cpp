@@ -125,6 +125,16 @@ template <class Visit>
 bool LatticeRootSolver::scan(const Integer& a, const Integer& b, int ca, int cb, Visit& visit) const {
   if (cb == ca) return false;
   if (b - a == 1) return visit(LatticeInterval{a, cb - ca, sign_changes_across(a)});
+  const Polynomial& q = sturm_.square_free();
+  if (q.degree() == 1) {
+    // One simple root r = −c0/c1, known to lie in [aδ, bδ): its interval is floor(r·2^b) in closed form.
+    Integer num = -q[0] << static_cast<unsigned>(bits_), den = q[1];
+    if (den < 0) num = -num, den = -den;
+    Integer k = num / den;
+    if (k * den > num) k -= 1;  // floor for negative quotients
+    KMR_CHECK(a <= k && k < b, "linear root outside the counted range");
+    return visit(LatticeInterval{k, 1, sign_changes_across(k)});
+  }
   Integer mid = (a + b) >> 1;  // floor for negatives too
   int cm = roots_below_lattice(mid);
   if (scan(a, mid, ca, cm, visit)) return true;
