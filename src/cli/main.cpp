@@ -16,6 +16,7 @@ struct Command {
 
 const Command kCommands[] = {
     {"audit", "check the thesis's claims on built-in defaults and report figures", kmr::cli::audit_command},
+    {"bench", "measure performance (bench sac: self-adjusting programs vs static twins)", kmr::cli::bench_command},
 };
 
 int usage(std::ostream& out) {

@@ -40,38 +40,46 @@ void OrderList::relabel_group(OmGroup* g) {
   }
 }
 
-// Dietz–Sleator: find the smallest j with label(g_j) − label(g) > j², spread g_1..g_{j−1} evenly.
+// Bender et al. (2002): if g has no free label after it, find the smallest aligned label range
+// [lo, lo + 2^i) around g whose group count is below (2/T)^i (T ≈ 1.41) and spread its groups
+// evenly. Amortized O(log #groups) relabels per new group; a new group comes once per Θ(kGroupMax)
+// stamps, so stamps pay amortized O(1).
 OmGroup* OrderList::insert_group_after(OmGroup* g) {
-  for (;;) {
-    std::uint64_t v0 = g->label;
-    std::uint64_t j = 1;
-    OmGroup* s = g->next;
-    bool found = false;
-    for (;;) {
-      std::uint64_t w = (s ? s->label : kTopEnd) - v0;
-      if (w > j * j) {
-        std::uint64_t k = 1;
-        for (OmGroup* t = g->next; t != s; t = t->next, ++k) {
-          t->label = v0 + k * (w / j);
+  std::uint64_t hi = g->next ? g->next->label : kTopEnd;
+  if (hi - g->label < 2) {
+    OmGroup *first = g, *last = g;
+    std::uint64_t count = 1;
+    double cap = 1;
+    bool done = false;
+    for (int i = 1; i <= 62 && !done; ++i) {
+      cap *= 1.41;
+      std::uint64_t size = std::uint64_t{1} << i;
+      std::uint64_t lo = g->label & ~(size - 1);
+      std::uint64_t end = lo + size;
+      while (first->prev && first->prev->label >= lo) first = first->prev, ++count;
+      while (last->next && last->next->label < end) last = last->next, ++count;
+      if (static_cast<double>(count + 1) <= cap && size / (count + 1) >= 2) {
+        std::uint64_t step = size / (count + 1), l = lo;
+        for (OmGroup* t = first;; t = t->next) {
+          t->label = l;
+          l += step;
           ++relabels_;
+          if (t == last) break;
         }
-        found = true;
-        break;
+        done = true;
       }
-      if (!s) break;
-      s = s->next;
-      ++j;
     }
-    if (found) break;
-    // The label space after g is crowded up to the end: spread every group evenly (rare).
-    std::uint64_t step = kTopEnd / (groups_ + 2), l = step;
-    for (OmGroup* t = first_group_; t; t = t->next, l += step) {
-      t->label = l;
-      ++relabels_;
+    if (!done) {  // more groups than the label space allows at this density: spread them all
+      std::uint64_t step = kTopEnd / (groups_ + 2), l = step;
+      for (OmGroup* t = first_group_; t; t = t->next, l += step) {
+        t->label = l;
+        ++relabels_;
+      }
     }
+    hi = g->next ? g->next->label : kTopEnd;
+    KMR_CHECK(hi - g->label >= 2, "OrderList: no free group label after relabelling");
   }
   auto* h = new OmGroup;
-  std::uint64_t hi = g->next ? g->next->label : kTopEnd;
   h->label = g->label + (hi - g->label) / 2;
   h->prev = g;
   h->next = g->next;

@@ -1,9 +1,9 @@
 #pragma once
 // OrderList: the order-maintenance list of timestamps behind the trace (§1.3.1: "function calls get
 // assigned two time stamps ... so that the function calls can be ordered sequentially").
-// Two-level labelling (Dietz–Sleator / Bender et al.): stamps live in groups of at most kGroupMax
-// with 64-bit labels inside the group; groups carry 62-bit labels relabelled by the Dietz–Sleator
-// j² rule. Guarantees (each tested in tests/sac/order_test.cpp):
+// Two-level labelling (Dietz–Sleator; Bender et al. 2002): stamps live in groups of at most
+// kGroupMax with 64-bit labels inside the group; groups carry 62-bit labels, relabelled over the
+// smallest sparse-enough aligned label range (Bender et al.'s density thresholds). Guarantees (each tested in tests/sac/order_test.cpp):
 //  * before(a, b) is the list order, for every pair of live stamps, after any sequence of
 //    insert_after / remove, including adversarial patterns (always after the same stamp, always
 //    after the newest, alternating, front-heavy);

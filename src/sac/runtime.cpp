@@ -83,6 +83,7 @@ void Runtime::free_node(Node* n) {
 }
 
 void Runtime::free_mod(ModBase* m) {
+  unindex_all(m);  // keys naming a freed modifiable can never match again (no address reuse)
   std::size_t b = m->bytes;
   if (!m->input) --live_owned_;
   m->~ModBase();
@@ -201,7 +202,15 @@ void Runtime::heap_erase(ReadNode* r) {
 }
 
 // ---- key index --------------------------------------------------------------------------------
-void Runtime::index(KeyedNode* n) {
+void Runtime::index(KeyedNode* n, ModBase* anchor) {
+  if (anchor) {
+    n->global = false;
+    n->hnext = anchor->keyed;
+    if (anchor->keyed) anchor->keyed->hpprev = &n->hnext;
+    anchor->keyed = n;
+    n->hpprev = &anchor->keyed;
+    return;
+  }
   if (indexed_ + 1 > buckets_.size()) {
     std::vector<KeyedNode*> old(buckets_.size() * 2, nullptr);
     old.swap(buckets_);
@@ -209,7 +218,7 @@ void Runtime::index(KeyedNode* n) {
     for (KeyedNode* b : old)
       for (KeyedNode* k = b; k;) {
         KeyedNode* nx = k->hnext;
-        index(k);
+        index(k, nullptr);
         k = nx;
       }
   }
@@ -218,6 +227,7 @@ void Runtime::index(KeyedNode* n) {
   if (*b) (*b)->hpprev = &n->hnext;
   *b = n;
   n->hpprev = b;
+  n->global = true;
   ++indexed_;
 }
 
@@ -227,18 +237,27 @@ void Runtime::unindex(KeyedNode* n) {
   if (n->hnext) n->hnext->hpprev = n->hpprev;
   n->hnext = nullptr;
   n->hpprev = nullptr;
-  --indexed_;
+  if (n->global) --indexed_;
 }
 
-AllocNode* Runtime::find_alloc(std::uint64_t h, const void* t) const {
+AllocNode* Runtime::find_alloc(std::uint64_t h, const void* t, const ModBase* anchor) const {
   AllocNode* best = nullptr;
-  for (KeyedNode* n = bucket(h); n; n = n->hnext) {
+  for (KeyedNode* n = chain(h, anchor); n; n = n->hnext) {
     if (n->hash != h || n->tag != t || n->kind != Kind::Alloc) continue;
     auto* a = static_cast<AllocNode*>(n);
     if (!a->mod || !in_window(a)) continue;
     if (!best || OrderList::before(a, best)) best = a;
   }
   return best;
+}
+
+// A live allocation with the same key before the current time belongs to this execution too.
+void Runtime::check_unique_key(const Label& label, std::uint64_t h, const ModBase* anchor) const {
+  for (KeyedNode* n = chain(h, anchor); n; n = n->hnext) {
+    if (n->hash != h || n->kind != Kind::Alloc || !static_cast<AllocNode*>(n)->mod) continue;
+    if (OrderList::before(n, now_) || n == now_)
+      fail(std::string("allocation key ") + label.name + ":" + hex(h) + " used twice in one execution");
+  }
 }
 
 // ---- change propagation (§1.3.1) --------------------------------------------------------------

@@ -14,11 +14,13 @@
 //  * A write of a value equal (==) to the current one dirties nothing.
 //  * A memoized call is reused only if its interval lies inside the interval being re-executed and
 //    after the current time (Acar's rule); the initial run never reuses.
-//  * alloc under a key found in the interval being re-executed returns the same modifiable.
+//  * alloc under a key found in the interval being re-executed returns the same modifiable;
+//    allocation keys are unique within an execution (a repeated key throws ContractError: reusing
+//    one modifiable in two roles would corrupt the computation).
 //  * Trace that is not reused is discarded; discarding runs its undo hooks (on_discard) in time
 //    order; modifiables allocated in discarded trace are freed at the end of propagate().
 //  * Misuse throws kmr::ContractError with a message naming it: reading an unwritten modifiable,
-//    writing a modifiable twice in one execution, writing an input inside a run, a write that would
+//    writing a modifiable twice in one execution, an allocation key used twice in one execution, writing an input inside a run, a write that would
 //    affect an earlier read (inconsistent program), trace operations outside a run or inside an undo
 //    hook, propagate/change/release during a run, releasing an input that still has readers.
 //  * Deterministic: no result or signature depends on pointer values or hash-table order.
@@ -82,6 +84,28 @@ std::uint64_t canon_key(const std::tuple<A...>& t) {
   return h;
 }
 
+// The anchor of a key: its first modifiable, on whose list the memo/alloc node is indexed (the
+// modifiable was just touched, so lookups stay in cache); keys without one use a hash table.
+template <class T>
+ModBase* anchor_one(const T& x) {
+  if constexpr (std::is_convertible_v<const T&, const ModBase*>)
+    return const_cast<ModBase*>(static_cast<const ModBase*>(x));
+  else
+    return nullptr;
+}
+template <class T>
+ModBase* anchor_of(const T& x) {
+  return anchor_one(x);
+}
+template <class... A>
+ModBase* anchor_of(const std::tuple<A...>& t) {
+  return std::apply([](const auto&... x) {
+    ModBase* a = nullptr;
+    ((a = a ? a : anchor_one(x)), ...);
+    return a;
+  }, t);
+}
+
 // ---- trace nodes ------------------------------------------------------------------------------
 enum class Kind : std::uint8_t { ReadStart, End, MemoStart, Alloc, Write, Hook };
 
@@ -111,6 +135,7 @@ struct KeyedNode : Node {  // memo and alloc nodes, indexed by key hash
   const void* tag = nullptr;  // identifies the key/value types
   KeyedNode* hnext = nullptr;
   KeyedNode** hpprev = nullptr;
+  bool global = false;  // in the runtime's hash table, else on its anchor modifiable's list
   using Node::Node;
 };
 
@@ -141,6 +166,7 @@ struct ModBase {
   ReadNode* readers = nullptr;  // intrusive list of live reads
   WriteNode* writer = nullptr;  // the write of the current execution (owned modifiables)
   AllocNode* owner = nullptr;   // the allocation (null for inputs)
+  KeyedNode* keyed = nullptr;   // memo/alloc nodes whose key's first modifiable is this one
   bool input = false;
   bool written = false;
   bool dead = false;
@@ -250,9 +276,12 @@ class Runtime {
     inside("alloc");
     std::uint64_t h = label.hash;
     ((h = mix(h, canon_key(keys))), ...);
+    ModBase* anchor = nullptr;
+    ((anchor = anchor ? anchor : anchor_one(keys)), ...);
     Mod<T>* m = nullptr;
+    check_unique_key(label, h, anchor);
     if (finger_) {
-      if (AllocNode* a = find_alloc(h, tag<Mod<T>>())) {
+      if (AllocNode* a = find_alloc(h, tag<Mod<T>>(), anchor)) {
         m = static_cast<Mod<T>*>(a->mod);
         a->mod = nullptr;
         unindex(a);
@@ -270,7 +299,7 @@ class Runtime {
     a->tag = tag<Mod<T>>();
     a->mod = m;
     m->owner = a;
-    index(a);
+    index(a, anchor);
     return m;
   }
   template <class R, class Key, class F>
@@ -278,8 +307,9 @@ class Runtime {
     inside("memo");
     using M = MemoImpl<Key, R>;
     std::uint64_t h = mix(label.hash, canon_key(key));
+    ModBase* anchor = anchor_of(key);
     if (finger_) {
-      if (M* m = find_memo<M>(h, label, key)) {
+      if (M* m = find_memo<M>(h, label, key, anchor)) {
         ++stats_.memo_hits;
         discard(now_, m);
         propagate_until(m->end);
@@ -296,7 +326,7 @@ class Runtime {
     R result = body();
     m->end = append(make_node<EndNode>());
     m->result = result;
-    index(m);
+    index(m, anchor);
     return result;
   }
   // Undo hook: f runs when this point of the trace is discarded (not on ~Runtime).
@@ -407,14 +437,20 @@ class Runtime {
   void heap_down(std::size_t i);
 
   // key index for memo and alloc nodes (lookup only; results never depend on its order)
-  void index(KeyedNode* n);
+  void index(KeyedNode* n, ModBase* anchor);
   void unindex(KeyedNode* n);
-  KeyedNode* bucket(std::uint64_t h) const { return buckets_[h & (buckets_.size() - 1)]; }
-  AllocNode* find_alloc(std::uint64_t h, const void* t) const;
+  void unindex_all(ModBase* m) {
+    while (m->keyed) unindex(m->keyed);
+  }
+  KeyedNode* chain(std::uint64_t h, const ModBase* anchor) const {
+    return anchor ? anchor->keyed : buckets_[h & (buckets_.size() - 1)];
+  }
+  AllocNode* find_alloc(std::uint64_t h, const void* t, const ModBase* anchor) const;
+  void check_unique_key(const Label& label, std::uint64_t h, const ModBase* anchor) const;
   template <class M, class Key>
-  M* find_memo(std::uint64_t h, const Label& label, const Key& key) const {
+  M* find_memo(std::uint64_t h, const Label& label, const Key& key, const ModBase* anchor) const {
     M* best = nullptr;
-    for (KeyedNode* n = bucket(h); n; n = n->hnext) {
+    for (KeyedNode* n = chain(h, anchor); n; n = n->hnext) {
       if (n->hash != h || n->tag != tag<M>() || n->kind != Kind::MemoStart) continue;
       auto* m = static_cast<M*>(n);
       if (m->label->hash != label.hash || !(m->key == key)) continue;

@@ -23,6 +23,7 @@ List* map_list(Runtime* rt, List* l) {
 struct Keep {
   using Ctx = long long;
   static constexpr Label kFilter{"filter"}, kCell{"filter.cell"};
+  static constexpr bool kByValue = false;
   static bool keep(Ctx, long long x) { return keep_fn(x); }
 };
 constexpr Label kFilterHead{"filter.head"}, kFilterOut{"filter.out"};

@@ -25,47 +25,81 @@ ListInput::ListInput(Runtime& rt, const std::vector<long long>& values, const st
     : rt_(rt) {
   KMR_CHECK(values.size() == ids.size(), "ListInput: one id per value");
   nil_ = rt.input<Cell>(kNil, 0, Cell{});
-  cells_.resize(values.size());
   List* next = nil_;
+  std::vector<List*> cells(values.size());
   for (std::size_t i = values.size(); i-- > 0;) {
-    cells_[i] = rt.input<Cell>(kIn, ids[i], Cell{false, values[i], next});
-    next = cells_[i];
+    cells[i] = rt.input<Cell>(kIn, ids[i], Cell{false, values[i], next});
+    next = cells[i];
   }
   root_ = rt.input<List*>(kRoot, 0, next);
+  for (std::size_t i = 0; i < cells.size(); ++i) add(cells[i], i ? cells[i - 1] : nullptr);
 }
 
-void ListInput::point(std::size_t pos, List* to) {
-  if (pos == 0) {
+void ListInput::add(List* cell, List* pred) {
+  where_[cell] = pool_.size();
+  pool_.push_back(cell);
+  prev_[cell] = pred;
+}
+
+void ListInput::point(List* pred, List* to) {
+  if (!pred) {
     rt_.change(root_, to);
   } else {
-    Cell c = rt_.deref(cells_[pos - 1]);
+    Cell c = rt_.deref(pred);
     c.tail = to;
-    rt_.change(cells_[pos - 1], c);
+    rt_.change(pred, c);
   }
+  if (to != nil_) prev_[to] = pred;
+}
+
+List* ListInput::insert_after(List* pred, std::uint64_t id, long long value) {
+  List* next = pred ? rt_.deref(pred).tail : rt_.deref(root_);
+  List* cell = rt_.input<Cell>(kIn, id, Cell{false, value, next});
+  add(cell, pred);
+  point(pred, cell);
+  if (next != nil_) prev_[next] = cell;
+  return cell;
+}
+
+void ListInput::erase(List* cell) {
+  auto w = where_.find(cell);
+  if (w == where_.end()) throw InputError("ListInput::erase: not a live cell");
+  List* pred = prev_.at(cell);
+  point(pred, rt_.deref(cell).tail);
+  std::size_t i = w->second;
+  pool_[i] = pool_.back();
+  where_[pool_[i]] = i;
+  pool_.pop_back();
+  where_.erase(cell);
+  prev_.erase(cell);
+  released_.push_back(cell);
+}
+
+void ListInput::set(List* cell, long long value) {
+  Cell c = rt_.deref(cell);
+  c.head = value;
+  rt_.change(cell, c);
+}
+
+List* ListInput::cell_at(std::size_t pos) const {
+  if (pos >= pool_.size()) throw InputError("ListInput: no element at position " + std::to_string(pos));
+  List* l = rt_.deref(root_);
+  for (; pos > 0; --pos) l = rt_.deref(l).tail;
+  return l;
+}
+
+List* ListInput::random_cell(std::uint64_t r) const {
+  if (pool_.empty()) throw InputError("ListInput::random_cell: the list is empty");
+  return pool_[r % pool_.size()];
 }
 
 void ListInput::insert(std::size_t pos, std::uint64_t id, long long value) {
-  if (pos > cells_.size()) throw InputError("ListInput::insert: position " + std::to_string(pos) + " past the end");
-  List* next = pos < cells_.size() ? cells_[pos] : nil_;
-  List* cell = rt_.input<Cell>(kIn, id, Cell{false, value, next});
-  point(pos, cell);
-  cells_.insert(cells_.begin() + static_cast<std::ptrdiff_t>(pos), cell);
+  if (pos > pool_.size()) throw InputError("ListInput::insert: position " + std::to_string(pos) + " past the end");
+  insert_after(pos ? cell_at(pos - 1) : nullptr, id, value);
 }
 
-void ListInput::erase(std::size_t pos) {
-  if (pos >= cells_.size()) throw InputError("ListInput::erase: no element at position " + std::to_string(pos));
-  List* next = pos + 1 < cells_.size() ? cells_[pos + 1] : nil_;
-  point(pos, next);
-  released_.push_back(cells_[pos]);
-  cells_.erase(cells_.begin() + static_cast<std::ptrdiff_t>(pos));
-}
-
-void ListInput::set(std::size_t pos, long long value) {
-  if (pos >= cells_.size()) throw InputError("ListInput::set: no element at position " + std::to_string(pos));
-  Cell c = rt_.deref(cells_[pos]);
-  c.head = value;
-  rt_.change(cells_[pos], c);
-}
+void ListInput::erase(std::size_t pos) { erase(cell_at(pos)); }
+void ListInput::set(std::size_t pos, long long value) { set(cell_at(pos), value); }
 
 void ListInput::propagate() {
   rt_.propagate();
@@ -73,12 +107,7 @@ void ListInput::propagate() {
   released_.clear();
 }
 
-std::vector<long long> ListInput::values() const {
-  std::vector<long long> v;
-  v.reserve(cells_.size());
-  for (const List* l : cells_) v.push_back(rt_.deref(l).head);
-  return v;
-}
+std::vector<long long> ListInput::values() const { return to_vector(rt_, root_); }
 
 namespace {
 constexpr std::size_t kBlock = 1 << 16;

@@ -10,6 +10,7 @@
 //    O(1) expected cells per round and O(log n) expected rounds (a stable reduction, not a left fold).
 #include <cstdint>
 #include <tuple>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -42,12 +43,18 @@ inline bool coin(const sac::ModBase* m, std::uint64_t round) { return sac::mix(m
 std::vector<long long> to_vector(const Runtime& rt, const List* l);
 std::vector<long long> to_vector(const Runtime& rt, const Root* r);
 
-// The editable input list: root → box(e0) → box(e1) → ... → nil box.
+// The editable input list: root → box(e0) → box(e1) → ... → nil box. Edits by cell are O(1)
+// expected (predecessors in a side table); positional edits walk the list (for tests).
 class ListInput {
  public:
   ListInput(Runtime& rt, const std::vector<long long>& values, const std::vector<std::uint64_t>& ids);
   Root* root() const { return root_; }
-  std::size_t size() const { return cells_.size(); }
+  std::size_t size() const { return pool_.size(); }
+  List* insert_after(List* pred, std::uint64_t id, long long value);  // pred null: at the front
+  void erase(List* cell);
+  void set(List* cell, long long value);
+  List* cell_at(std::size_t pos) const;           // O(pos)
+  List* random_cell(std::uint64_t r) const;       // uniform over the live cells (for benchmarks)
   void insert(std::size_t pos, std::uint64_t id, long long value);  // new element at position pos
   void erase(std::size_t pos);
   void set(std::size_t pos, long long value);
@@ -55,11 +62,14 @@ class ListInput {
   std::vector<long long> values() const;
 
  private:
-  void point(std::size_t pos, List* to);  // makes position pos−1 (or the root) point at `to`
+  void point(List* pred, List* to);  // makes pred (or the root if null) point at `to`
+  void add(List* cell, List* pred);
   Runtime& rt_;
   Root* root_;
   List* nil_;
-  std::vector<List*> cells_;
+  std::vector<List*> pool_;                      // live cells, in no particular order
+  std::unordered_map<List*, std::size_t> where_;  // cell → index in pool_ (lookup only)
+  std::unordered_map<List*, List*> prev_;        // cell → predecessor cell (null: first)
   std::vector<List*> released_;
 };
 
@@ -73,7 +83,9 @@ struct Filter {
         if (c.nil) {
           rt->write(dest, Cell{});
         } else if (P::keep(ctx, c.head)) {
-          List* cell = rt->alloc<Cell>(P::kCell, l, ctx);
+          // P::kByValue: name the cell by the element's value, not by its cell (whose name may
+          // itself come from an earlier filter and would shift with edits, cascading).
+          List* cell = P::kByValue ? rt->alloc<Cell>(P::kCell, c.head, ctx) : rt->alloc<Cell>(P::kCell, l, ctx);
           rt->write(dest, Cell{false, c.head, cell});
           into(rt, c.tail, ctx, cell);
         } else {

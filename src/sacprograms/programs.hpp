@@ -30,11 +30,12 @@ long long point_x(long long p);
 long long point_y(long long p);
 
 // A list program: `build` runs it on the input root inside rt.run and returns a function that
-// reads its current output (through Meta.deref); `twin` runs the static twin on a plain list.
+// reads its current output (through Meta.deref); `twin` runs the static twin on a plain list and,
+// if `seconds` is not null, stores the time of the algorithm proper (not of copying its output).
 struct ListProgram {
   std::string name;
   std::function<std::function<std::vector<long long>()>(Runtime&, Root*)> build;
-  std::function<std::vector<long long>(const SCell*, SArena&)> twin;
+  std::function<std::vector<long long>(const SCell*, SArena&, double* seconds)> twin;
 };
 
 // map, filter, sum, quicksort, mergesort, quickhull — in that order.

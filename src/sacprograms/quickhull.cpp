@@ -57,6 +57,7 @@ struct FarOp {
 struct RightOf {  // strictly right of the directed line a→b
   using Ctx = std::pair<long long, long long>;
   static constexpr Label kFilter{"qh.filter"}, kCell{"qh.filter.cell"};
+  static constexpr bool kByValue = false;  // points repeat: keys must stay unique
   static bool keep(Ctx ab, long long p) { return orient(ab.first, ab.second, p) < 0; }
 };
 

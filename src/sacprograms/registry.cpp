@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <chrono>
 #include <numeric>
 
 #include "sacprograms/internal.hpp"
@@ -6,6 +7,16 @@
 namespace kmr::sacprograms {
 
 namespace {
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+template <class F>
+auto timed(double* seconds, F&& f) {
+  auto t0 = std::chrono::steady_clock::now();
+  auto r = f();
+  if (seconds) *seconds = since(t0);
+  return r;
+}
 std::function<std::vector<long long>()> list_reader(Runtime& rt, Root* out) {
   return [&rt, out] { return to_vector(rt, out); };
 }
@@ -14,21 +25,21 @@ std::function<std::vector<long long>()> list_reader(Runtime& rt, Root* out) {
 const std::vector<ListProgram>& list_programs() {
   static const std::vector<ListProgram> programs = {
       {"map", [](Runtime& rt, Root* in) { return list_reader(rt, sa_map(rt, in)); },
-       [](const SCell* l, SArena& a) { return to_vector(static_map(l, a)); }},
+       [](const SCell* l, SArena& a, double* t) { return to_vector(timed(t, [&] { return static_map(l, a); })); }},
       {"filter", [](Runtime& rt, Root* in) { return list_reader(rt, sa_filter(rt, in)); },
-       [](const SCell* l, SArena& a) { return to_vector(static_filter(l, a)); }},
+       [](const SCell* l, SArena& a, double* t) { return to_vector(timed(t, [&] { return static_filter(l, a); })); }},
       {"sum",
        [](Runtime& rt, Root* in) -> std::function<std::vector<long long>()> {
          Mod<long long>* out = sa_sum(rt, in);
          return [&rt, out] { return std::vector<long long>{rt.deref(out)}; };
        },
-       [](const SCell* l, SArena&) { return std::vector<long long>{static_sum(l)}; }},
+       [](const SCell* l, SArena&, double* t) { return std::vector<long long>{timed(t, [&] { return static_sum(l); })}; }},
       {"quicksort", [](Runtime& rt, Root* in) { return list_reader(rt, sa_quicksort(rt, in)); },
-       [](const SCell* l, SArena& a) { return to_vector(static_quicksort(l, a)); }},
+       [](const SCell* l, SArena& a, double* t) { return to_vector(timed(t, [&] { return static_quicksort(l, a); })); }},
       {"mergesort", [](Runtime& rt, Root* in) { return list_reader(rt, sa_mergesort(rt, in)); },
-       [](const SCell* l, SArena& a) { return to_vector(static_mergesort(l, a)); }},
+       [](const SCell* l, SArena& a, double* t) { return to_vector(timed(t, [&] { return static_mergesort(l, a); })); }},
       {"quickhull", [](Runtime& rt, Root* in) { return list_reader(rt, sa_quickhull(rt, in)); },
-       [](const SCell* l, SArena&) { return static_quickhull(l); }},
+       [](const SCell* l, SArena&, double* t) { return timed(t, [&] { return static_quickhull(l); }); }},
   };
   return programs;
 }

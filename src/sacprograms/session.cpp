@@ -39,7 +39,7 @@ Snapshot ListSession::snapshot(bool with_signature) const {
 
 std::vector<long long> ListSession::static_output() const {
   SArena arena;
-  return program_->twin(to_slist(arena, values()), arena);
+  return program_->twin(to_slist(arena, values()), arena, nullptr);
 }
 
 Snapshot from_scratch(const ListProgram& program, const std::vector<long long>& values,

@@ -9,20 +9,21 @@ constexpr Label kQs{"qsort"}, kQsSplit{"qsort.split"}, kQsLes{"qsort.les"}, kQsG
     kQsMid{"qsort.mid"}, kQsMidTail{"qsort.midtail"}, kQsLCell{"qsort.lcell"}, kQsGCell{"qsort.gcell"},
     kQsNil{"qsort.nil"}, kQsHead{"qsort.head"}, kQsOut{"qsort.out"};
 
-Unit qs_split(Runtime* rt, List* l, long long p, List* dl, List* dg) {
-  return rt->memo<Unit>(kQsSplit, std::make_tuple(l, p, dl, dg), [rt, l, p, dl, dg] {
-    rt->read(l, [rt, l, p, dl, dg](const Cell& c) {
+// Cells are keyed by (element cell, pivot cell): unique within a run, as keys must be.
+Unit qs_split(Runtime* rt, List* l, long long p, List* pk, List* dl, List* dg) {
+  return rt->memo<Unit>(kQsSplit, std::make_tuple(l, p, pk, dl, dg), [rt, l, p, pk, dl, dg] {
+    rt->read(l, [rt, l, p, pk, dl, dg](const Cell& c) {
       if (c.nil) {
         rt->write(dl, Cell{});
         rt->write(dg, Cell{});
       } else if (c.head < p) {
-        List* cell = rt->alloc<Cell>(kQsLCell, l, dl);
+        List* cell = rt->alloc<Cell>(kQsLCell, l, pk);
         rt->write(dl, Cell{false, c.head, cell});
-        qs_split(rt, c.tail, p, cell, dg);
+        qs_split(rt, c.tail, p, pk, cell, dg);
       } else {
-        List* cell = rt->alloc<Cell>(kQsGCell, l, dg);
+        List* cell = rt->alloc<Cell>(kQsGCell, l, pk);
         rt->write(dg, Cell{false, c.head, cell});
-        qs_split(rt, c.tail, p, dl, cell);
+        qs_split(rt, c.tail, p, pk, dl, cell);
       }
     });
     return Unit{};
@@ -38,7 +39,7 @@ Unit qs(Runtime* rt, List* l, List* rest, List* dest) {
       }
       List* les = rt->alloc<Cell>(kQsLes, l);
       List* grt = rt->alloc<Cell>(kQsGrt, l);
-      qs_split(rt, c.tail, c.head, les, grt);
+      qs_split(rt, c.tail, c.head, l, les, grt);
       List* mid = rt->alloc<Cell>(kQsMid, l);
       List* midtail = rt->alloc<Cell>(kQsMidTail, l);
       rt->write(mid, Cell{false, c.head, midtail});
@@ -54,13 +55,19 @@ constexpr Label kMs{"msort"}, kMsSplit{"msort.split"}, kMsMerge{"msort.merge"}, 
     kMsB{"msort.b"}, kMsSA{"msort.sa"}, kMsSB{"msort.sb"}, kMsCA{"msort.ca"}, kMsCB{"msort.cb"},
     kMsCell{"msort.cell"}, kMsHead{"msort.head"}, kMsOut{"msort.out"};
 
+// The side of an element at depth d: a coin of its value (so an edit moves no other element), or,
+// past depth 48 (only runs of equal values get there), of its cell's name.
+bool ms_coin(const List* l, long long x, std::uint64_t d) {
+  return d < 48 ? (sac::mix(static_cast<std::uint64_t>(x), d + 1000) & 1) : coin(l, d + 1000);
+}
+
 Unit ms_split(Runtime* rt, List* l, std::uint64_t d, List* a, List* b) {
   return rt->memo<Unit>(kMsSplit, std::make_tuple(l, d, a, b), [rt, l, d, a, b] {
     rt->read(l, [rt, l, d, a, b](const Cell& c) {
       if (c.nil) {
         rt->write(a, Cell{});
         rt->write(b, Cell{});
-      } else if (coin(l, d + 1000)) {
+      } else if (ms_coin(l, c.head, d)) {
         List* cell = rt->alloc<Cell>(kMsCA, l, d);
         rt->write(a, Cell{false, c.head, cell});
         ms_split(rt, c.tail, d, cell, b);
@@ -74,10 +81,10 @@ Unit ms_split(Runtime* rt, List* l, std::uint64_t d, List* a, List* b) {
   });
 }
 
-Unit ms_merge(Runtime* rt, List* a, List* b, List* dest) {
-  return rt->memo<Unit>(kMsMerge, std::make_tuple(a, b, dest), [rt, a, b, dest] {
-    rt->read(a, [rt, a, b, dest](const Cell& ca) {
-      rt->read(b, [rt, a, b, dest, ca](const Cell& cb) {
+Unit ms_merge(Runtime* rt, List* a, List* b, std::uint64_t d, List* dest) {
+  return rt->memo<Unit>(kMsMerge, std::make_tuple(a, b, d, dest), [rt, a, b, d, dest] {
+    rt->read(a, [rt, a, b, d, dest](const Cell& ca) {
+      rt->read(b, [rt, a, b, d, dest, ca](const Cell& cb) {
         if (ca.nil) {
           rt->write(dest, cb);
         } else if (cb.nil) {
@@ -85,11 +92,11 @@ Unit ms_merge(Runtime* rt, List* a, List* b, List* dest) {
         } else if (ca.head <= cb.head) {
           List* cell = rt->alloc<Cell>(kMsCell, a);
           rt->write(dest, Cell{false, ca.head, cell});
-          ms_merge(rt, ca.tail, b, cell);
+          ms_merge(rt, ca.tail, b, d, cell);
         } else {
           List* cell = rt->alloc<Cell>(kMsCell, b);
           rt->write(dest, Cell{false, cb.head, cell});
-          ms_merge(rt, a, cb.tail, cell);
+          ms_merge(rt, a, cb.tail, d, cell);
         }
       });
     });
@@ -116,7 +123,7 @@ Unit ms(Runtime* rt, List* l, std::uint64_t d, std::uint64_t path, List* dest) {
         List* sb = rt->alloc<Cell>(kMsSB, path);
         ms(rt, a, d + 1, sac::mix(path, 1), sa);
         ms(rt, b, d + 1, sac::mix(path, 2), sb);
-        ms_merge(rt, sa, sb, dest);
+        ms_merge(rt, sa, sb, d, dest);
       });
     });
     return Unit{};
