@@ -2,6 +2,8 @@
 
 #include <pthread.h>
 
+#include <cstdlib>
+
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -11,13 +13,13 @@ namespace kmr::sac {
 // ---- memory: size-classed free lists (16-byte classes), so trace nodes cost no malloc call ----
 struct Runtime::Pool {
   static constexpr std::size_t kClasses = 64;  // up to 1 KiB
-  static constexpr std::size_t kChunk = std::size_t{1} << 20;
+  static constexpr std::size_t kChunk = std::size_t{8} << 20;
   std::vector<void*> free_list = std::vector<void*>(kClasses, nullptr);
   std::vector<char*> chunks;
   char* cur = nullptr;
   std::size_t left = 0;
   ~Pool() {
-    for (char* c : chunks) ::operator delete(c);
+    for (char* c : chunks) std::free(c);
   }
   static std::size_t rounded(std::size_t bytes) { return (bytes + 15) / 16 * 16; }
   void* alloc(std::size_t bytes) {
@@ -29,7 +31,9 @@ struct Runtime::Pool {
     }
     std::size_t b = c * 16;
     if (left < b) {
-      cur = static_cast<char*>(::operator new(kChunk));
+      cur = static_cast<char*>(std::aligned_alloc(4096, kChunk));
+      if (!cur) throw std::bad_alloc();
+
       chunks.push_back(cur);
       left = kChunk;
     }

@@ -191,6 +191,11 @@ void TreeInput::merge(int i) {
   mods_[l] = mods_[r] = nullptr;
 }
 
+void TreeInput::reserve(std::size_t splits) {
+  tree_.nodes.reserve(tree_.nodes.size() + 2 * splits);
+  mods_.reserve(tree_.nodes.size() + 2 * splits);
+}
+
 void TreeInput::propagate() {
   rt_.propagate();
   for (auto* m : released_) rt_.release(m);

@@ -52,6 +52,7 @@ class TreeInput {
   void split(int i, int op, long long right);
   void merge(int i);
   void propagate();  // rt.propagate(), then release merged-away leaves
+  void reserve(std::size_t splits);  // room for that many splits without reallocating (benchmarks)
 
  private:
   sac::Mod<TNode>* make(int i);
