@@ -36,13 +36,7 @@ Verdict propagation_equals_from_scratch(const Options& o) {
     ListSession s(p, in);
     for (std::size_t r = 0; r < rounds; ++r) {
       std::size_t edits = r % 3 == 2 ? 4 : 1;  // every third round a batch before one propagation
-      for (std::size_t e = 0; e < edits; ++e) {
-        std::size_t size = s.values().size();
-        int kind = size == 0 ? 0 : static_cast<int>(rng() % 3);
-        if (kind == 0) s.insert(rng() % (size + 1), value());
-        else if (kind == 1) s.erase(rng() % size);
-        else s.set(rng() % size, value());
-      }
+      for (std::size_t e = 0; e < edits; ++e) s.random_edit(rng, value);
       s.propagate();
       Snapshot a = s.snapshot(), b = from_scratch(p, s.values(), s.ids());
       ++checked;

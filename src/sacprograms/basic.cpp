@@ -40,23 +40,13 @@ constexpr Label kSumOut{"sum.out"};
 
 }  // namespace
 
-Root* sa_map(Runtime& rt, Root* in) {
-  return rt.run([r = &rt, in] {
-    Root* out = r->alloc<List*>(kMapOut);
-    r->read(in, [r, out](List* l) { r->write(out, map_list(r, l)); });
-    return out;
-  });
-}
+Root* sa_map(Runtime& rt, Root* in) { return run_list_program(rt, in, kMapOut, map_list); }
 
 Root* sa_filter(Runtime& rt, Root* in) {
-  return rt.run([r = &rt, in] {
-    Root* out = r->alloc<List*>(kFilterOut);
-    r->read(in, [r, out](List* l) {
-      List* head = r->alloc<Cell>(kFilterHead);
-      Filter<Keep>::into(r, l, 0, head);
-      r->write(out, head);
-    });
-    return out;
+  return run_list_program(rt, in, kFilterOut, [](Runtime* r, List* l) {
+    List* head = r->alloc<Cell>(kFilterHead);
+    Filter<Keep>::into(r, l, 0, head);
+    return head;
   });
 }
 

@@ -73,6 +73,17 @@ class ListInput {
   std::vector<List*> released_;
 };
 
+// The entry point of a list program: inside rt.run, allocates the output root under `out_label`
+// and, inside a read of the input root, writes body(rt, first box)'s result to it.
+template <class F>
+Root* run_list_program(Runtime& rt, Root* in, const Label& out_label, F body) {
+  return rt.run([r = &rt, in, lab = &out_label, body] {
+    Root* out = r->alloc<List*>(*lab);
+    r->read(in, [r, out, body](List* l) { r->write(out, body(r, l)); });
+    return out;
+  });
+}
+
 // ---- filter with context: dest := [x ∈ l | P::keep(ctx, x)] (destination passing) -----------
 template <class P>
 struct Filter {

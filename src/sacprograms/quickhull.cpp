@@ -93,57 +93,56 @@ Unit side(Runtime* rt, List* l, long long a, long long b, List* rest, List* dest
 }  // namespace
 
 Root* sa_quickhull(Runtime& rt, Root* in) {
-  return rt.run([r = &rt, in] {
-    Root* out = r->alloc<List*>(kOut);
-    r->read(in, [r, out](List* l) {
-      List* head = r->alloc<Cell>(kHead);
-      r->read(l, [r, l, head](const Cell& c) {
-        if (c.nil) {
-          r->write(head, Cell{});
-          return;
-        }
-        Mod<long long>* mn = r->alloc<long long>(kMin);
-        Mod<long long>* mx = r->alloc<long long>(kMax);
-        Reduce<MinOp>::run(r, l, 0, 0, mn);
-        Reduce<MaxOp>::run(r, l, 0, 0, mx);
-        r->read(mn, [r, l, head, mx](long long a) {
-          r->read(mx, [r, l, head, a](long long b) {
-            List* nil = r->alloc<Cell>(kNil);
-            r->write(nil, Cell{});
-            if (a == b) {
-              r->write(head, Cell{false, a, nil});
-              return;
-            }
-            List* lower = r->alloc<Cell>(kLow);
-            List* upper = r->alloc<Cell>(kUp);
-            Filter<RightOf>::into(r, l, Ctx{a, b}, lower);
-            Filter<RightOf>::into(r, l, Ctx{b, a}, upper);
-            List* btail = r->alloc<Cell>(kBTail);
-            side(r, upper, b, a, nil, btail);
-            List* bcell = r->alloc<Cell>(kBCell);
-            r->write(bcell, Cell{false, b, btail});
-            List* atail = r->alloc<Cell>(kATail);
-            side(r, lower, a, b, bcell, atail);
-            r->write(head, Cell{false, a, atail});
-          });
+  return run_list_program(rt, in, kOut, [](Runtime* r, List* l) {
+    List* head = r->alloc<Cell>(kHead);
+    r->read(l, [r, l, head](const Cell& c) {
+      if (c.nil) {
+        r->write(head, Cell{});
+        return;
+      }
+      Mod<long long>* mn = r->alloc<long long>(kMin);
+      Mod<long long>* mx = r->alloc<long long>(kMax);
+      Reduce<MinOp>::run(r, l, 0, 0, mn);
+      Reduce<MaxOp>::run(r, l, 0, 0, mx);
+      r->read(mn, [r, l, head, mx](long long a) {
+        r->read(mx, [r, l, head, a](long long b) {
+          List* nil = r->alloc<Cell>(kNil);
+          r->write(nil, Cell{});
+          if (a == b) {
+            r->write(head, Cell{false, a, nil});
+            return;
+          }
+          List* lower = r->alloc<Cell>(kLow);
+          List* upper = r->alloc<Cell>(kUp);
+          Filter<RightOf>::into(r, l, Ctx{a, b}, lower);
+          Filter<RightOf>::into(r, l, Ctx{b, a}, upper);
+          List* btail = r->alloc<Cell>(kBTail);
+          side(r, upper, b, a, nil, btail);
+          List* bcell = r->alloc<Cell>(kBCell);
+          r->write(bcell, Cell{false, b, btail});
+          List* atail = r->alloc<Cell>(kATail);
+          side(r, lower, a, b, bcell, atail);
+          r->write(head, Cell{false, a, atail});
         });
       });
-      r->write(out, head);
     });
-    return out;
+    return head;
   });
 }
 
 namespace {
+std::vector<long long> right_of(const std::vector<long long>& s, long long a, long long b) {
+  std::vector<long long> r;
+  for (long long p : s)
+    if (RightOf::keep({a, b}, p)) r.push_back(p);
+  return r;
+}
+
 void static_side(const std::vector<long long>& s, long long a, long long b, std::vector<long long>& out) {
   if (s.empty()) return;
   long long f = s[0];
   for (std::size_t i = 1; i < s.size(); ++i) f = farther({a, b}, f, s[i]);
-  std::vector<long long> s1, s2;
-  for (long long p : s) {
-    if (orient(a, f, p) < 0) s1.push_back(p);
-    if (orient(f, b, p) < 0) s2.push_back(p);
-  }
+  std::vector<long long> s1 = right_of(s, a, f), s2 = right_of(s, f, b);
   static_side(s1, a, f, out);
   out.push_back(f);
   static_side(s2, f, b, out);
@@ -160,11 +159,7 @@ std::vector<long long> static_quickhull(const SCell* l) {
     b = MaxOp::combine(0, b, p);
   }
   if (a == b) return {a};
-  std::vector<long long> lower, upper, out{a};
-  for (long long p : pts) {
-    if (orient(a, b, p) < 0) lower.push_back(p);
-    if (orient(b, a, p) < 0) upper.push_back(p);
-  }
+  std::vector<long long> lower = right_of(pts, a, b), upper = right_of(pts, b, a), out{a};
   static_side(lower, a, b, out);
   out.push_back(b);
   static_side(upper, b, a, out);

@@ -26,6 +26,14 @@ void ListSession::erase(std::size_t pos) {
 
 void ListSession::set(std::size_t pos, long long value) { input_->set(pos, value); }
 
+void ListSession::random_edit(std::mt19937_64& rng, const std::function<long long()>& value) {
+  std::size_t n = input_->size();
+  int kind = n == 0 ? 0 : static_cast<int>(rng() % 3);
+  if (kind == 0) insert(rng() % (n + 1), value());
+  else if (kind == 1) erase(rng() % n);
+  else set(rng() % n, value());
+}
+
 Snapshot ListSession::snapshot(bool with_signature) const {
   Snapshot s;
   s.output = reader_();

@@ -7,7 +7,9 @@
 //    same element ids, so its snapshot is the one an updated session must equal;
 //  * static_output() runs the static twin on the current input values.
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -30,6 +32,8 @@ class ListSession {
   void erase(std::size_t pos);
   void set(std::size_t pos, long long value);
   void propagate() { input_->propagate(); }
+  // One random edit: insert (always when empty), erase or set, at a uniform position.
+  void random_edit(std::mt19937_64& rng, const std::function<long long()>& value);
   Snapshot snapshot(bool with_signature = true) const;
   std::vector<long long> values() const { return input_->values(); }
   const std::vector<std::uint64_t>& ids() const { return ids_; }

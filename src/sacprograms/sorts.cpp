@@ -132,28 +132,20 @@ Unit ms(Runtime* rt, List* l, std::uint64_t d, std::uint64_t path, List* dest) {
 }  // namespace
 
 Root* sa_quicksort(Runtime& rt, Root* in) {
-  return rt.run([r = &rt, in] {
-    Root* out = r->alloc<List*>(kQsOut);
-    r->read(in, [r, out](List* l) {
-      List* nil = r->alloc<Cell>(kQsNil);
-      r->write(nil, Cell{});
-      List* head = r->alloc<Cell>(kQsHead);
-      qs(r, l, nil, head);
-      r->write(out, head);
-    });
-    return out;
+  return run_list_program(rt, in, kQsOut, [](Runtime* r, List* l) {
+    List* nil = r->alloc<Cell>(kQsNil);
+    r->write(nil, Cell{});
+    List* head = r->alloc<Cell>(kQsHead);
+    qs(r, l, nil, head);
+    return head;
   });
 }
 
 Root* sa_mergesort(Runtime& rt, Root* in) {
-  return rt.run([r = &rt, in] {
-    Root* out = r->alloc<List*>(kMsOut);
-    r->read(in, [r, out](List* l) {
-      List* head = r->alloc<Cell>(kMsHead);
-      ms(r, l, 0, 0x6d73, head);
-      r->write(out, head);
-    });
-    return out;
+  return run_list_program(rt, in, kMsOut, [](Runtime* r, List* l) {
+    List* head = r->alloc<Cell>(kMsHead);
+    ms(r, l, 0, 0x6d73, head);
+    return head;
   });
 }
 

@@ -67,11 +67,7 @@ TEST(SacPrograms, S1_3_EditsMatchFromScratchRuns) {
     for (auto& x : in) x = val();
     ListSession s(p, in);
     for (int e = 0; e < 60; ++e) {
-      std::size_t n = s.values().size();
-      int kind = n == 0 ? 0 : static_cast<int>(rng() % 3);
-      if (kind == 0) s.insert(rng() % (n + 1), val());
-      else if (kind == 1) s.erase(rng() % n);
-      else s.set(rng() % n, val());
+      s.random_edit(rng, val);
       s.propagate();
       Snapshot a = s.snapshot(), b = from_scratch(p, s.values(), s.ids());
       ASSERT_EQ(a.output, reference_output(p.name, s.values())) << p.name << " edit " << e;
