@@ -20,9 +20,11 @@
 //  * Trace that is not reused is discarded; discarding runs its undo hooks (on_discard) in time
 //    order; modifiables allocated in discarded trace are freed at the end of propagate().
 //  * Misuse throws kmr::ContractError with a message naming it: reading an unwritten modifiable,
-//    writing a modifiable twice in one execution, an allocation key used twice in one execution, writing an input inside a run, a write that would
-//    affect an earlier read (inconsistent program), trace operations outside a run or inside an undo
-//    hook, propagate/change/release during a run, releasing an input that still has readers.
+//    writing a modifiable twice in one execution, an allocation key used twice in one execution,
+//    writing an input inside a run, trace operations outside a run or inside an undo hook,
+//    propagate/change/release during a run, releasing an input that still has readers. (A write that
+//    would affect an earlier read is also refused; with write-once modifiables it is a defensive
+//    check that no test can reach.)
 //  * Deterministic: no result or signature depends on pointer values or hash-table order.
 // Closures given to read/memo/on_discard are stored and may be re-run: capture by value.
 #include <cstdint>

@@ -228,6 +228,18 @@ TEST(SacRuntime, MisuseWritingTwice) {
   EXPECT_NE(e.find("written twice"), std::string::npos) << e;
 }
 
+TEST(SacRuntime, MisuseAllocationKeyUsedTwiceInOneExecution) {
+  Runtime rt;
+  std::string e = error_of([&] {
+    rt.run([&] {
+      rt.alloc<int>(kCell, 7);
+      rt.alloc<int>(kCell, 7);
+      return 0;
+    });
+  });
+  EXPECT_NE(e.find("used twice in one execution"), std::string::npos) << e;
+}
+
 TEST(SacRuntime, MisuseWritingAnInputInsideARun) {
   Runtime rt;
   auto* in = rt.input<int>(kIn, 1, 0);
