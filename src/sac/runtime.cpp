@@ -127,19 +127,24 @@ void Runtime::check_writable(const ModBase* m) const {
 }
 
 // ---- readers and the queue of affected reads --------------------------------------------------
-void Runtime::link_reader(ReadNode* r) {
-  ModBase* m = r->mod;
+void Runtime::link_reader(ReadNode* r, ReadNode** head) {
+  r->rhead = head;
   r->rprev = nullptr;
-  r->rnext = m->readers;
-  if (m->readers) m->readers->rprev = r;
-  m->readers = r;
+  r->rnext = *head;
+  if (*head) (*head)->rprev = r;
+  *head = r;
 }
 
 void Runtime::unlink_reader(ReadNode* r) {
   if (r->rprev) r->rprev->rnext = r->rnext;
-  else r->mod->readers = r->rnext;
+  else *r->rhead = r->rnext;
   if (r->rnext) r->rnext->rprev = r->rprev;
   r->rprev = r->rnext = nullptr;
+}
+
+void Runtime::requeue(ReadNode* readers) {
+  for (ReadNode* r = readers; r; r = r->rnext)
+    if (r->heap < 0) heap_push(r);
 }
 
 void Runtime::dirty(ModBase* m) {
@@ -319,6 +324,23 @@ void Runtime::kill(Node* n) {
       if (w->mod->writer == w) w->mod->writer = nullptr;
       break;
     }
+    case Kind::IWrite: {
+      // The reads of this version see the previous one again.
+      auto* w = static_cast<IWriteNode*>(n);
+      IVersion* v = &w->version;
+      IVersion* p = v->vprev;
+      bool same = w->same_as_previous();
+      while (ReadNode* r = v->readers) {
+        unlink_reader(r);
+        r->ver = p;
+        link_reader(r, &p->readers);
+        if (!same && r->heap < 0) heap_push(r);
+      }
+      p->vnext = v->vnext;
+      if (v->vnext) v->vnext->vprev = p;
+      else static_cast<IModBase*>(w->mod)->last = p;
+      break;
+    }
     case Kind::Hook: {
       in_undo_ = true;
       try {
@@ -343,6 +365,11 @@ void Runtime::collect_dead() {
   for (ModBase* m : dead_) {
     KMR_CHECK(m->readers == nullptr, "sac: a discarded modifiable " + hex(m->name) + " is still read by live trace");
     KMR_CHECK(m->writer == nullptr, "sac: a discarded modifiable " + hex(m->name) + " is still written by live trace");
+    if (m->imperative) {
+      auto* im = static_cast<IModBase*>(m);
+      KMR_CHECK(im->first.readers == nullptr && im->last == &im->first,
+                "sac: a discarded imperative modifiable " + hex(m->name) + " is still read or written by live trace");
+    }
     free_mod(m);
   }
   dead_.clear();
@@ -391,6 +418,9 @@ std::string Runtime::signature() const {
       }
       case Kind::Write:
         out += "W" + hex(static_cast<const WriteNode*>(n)->mod->name);
+        break;
+      case Kind::IWrite:
+        out += "I" + hex(static_cast<const IWriteNode*>(n)->mod->name);
         break;
       case Kind::Hook:
         out += "H";

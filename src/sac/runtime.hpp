@@ -1,7 +1,8 @@
 #pragma once
 // kmr::sac — a self-adjusting computation runtime in the CEAL / ΔML style (thesis §1.3, App. A.2).
 //
-// Vocabulary (ΔML → here): `Box`/`IBox` modifiable → Mod<T>; `Box.get $ m` → rt.read(m, k);
+// Vocabulary (ΔML → here): `Box` modifiable → Mod<T>, `IBox` → IMod<T> (rt.ialloc / iread /
+// iwrite); `Box.get $ m` → rt.read(m, k);
 // `put` / `PutMemoTable.mkPut` keyed allocation → rt.alloc<T>(label, keys...); `mfun` memoized
 // function → rt.memo<R>(label, key, body); `Box.Meta.new/change/deref` → rt.input / rt.change /
 // rt.deref; `Adaptive.Meta.propagate` → rt.propagate(). A traceable value whose changes come from
@@ -12,6 +13,9 @@
 //    trace equals, token for token (signature()), the trace of a from-scratch run on the current
 //    input, and the live counts (trace nodes, owned modifiables) are equal (§1.3.1, §1.3.2).
 //  * A write of a value equal (==) to the current one dirties nothing.
+//  * IMod<T> (ΔML IBox) may be written many times in one execution: a read sees the latest write at
+//    or before its time (or the initial value from ialloc); inserting or discarding a write re-runs
+//    exactly the reads whose visible value changed.
 //  * A memoized call is reused only if its interval lies inside the interval being re-executed and
 //    after the current time (Acar's rule); the initial run never reuses.
 //  * alloc under a key found in the interval being re-executed returns the same modifiable;
@@ -109,7 +113,7 @@ ModBase* anchor_of(const std::tuple<A...>& t) {
 }
 
 // ---- trace nodes ------------------------------------------------------------------------------
-enum class Kind : std::uint8_t { ReadStart, End, MemoStart, Alloc, Write, Hook };
+enum class Kind : std::uint8_t { ReadStart, End, MemoStart, Alloc, Write, IWrite, Hook };
 
 struct Node : Stamp {
   Kind kind;
@@ -122,10 +126,14 @@ struct EndNode : Node {
   EndNode() : Node(Kind::End) {}
 };
 
+struct IVersion;
+
 struct ReadNode : Node {
   ModBase* mod = nullptr;
-  ReadNode* rprev = nullptr;  // the modifiable's reader list
+  ReadNode** rhead = nullptr;  // head of the reader list it is on (a Mod's, or an IMod version's)
+  ReadNode* rprev = nullptr;
   ReadNode* rnext = nullptr;
+  IVersion* ver = nullptr;     // for reads of an IMod: the version read
   Node* end = nullptr;
   std::int64_t heap = -1;  // index in the queue of affected reads, −1 if not queued
   ReadNode() : Node(Kind::ReadStart) {}
@@ -157,6 +165,23 @@ struct WriteNode : Node {
   WriteNode() : Node(Kind::Write) {}
 };
 
+// A version of an imperative modifiable (ΔML IBox): its initial value, or the value of one write.
+// Versions are kept in time order; a read sees the latest version written before it.
+struct IVersion {
+  IVersion* vprev = nullptr;
+  IVersion* vnext = nullptr;
+  ReadNode* readers = nullptr;  // the live reads that see this version
+  const Stamp* time = nullptr;  // the write's time; null for the initial value
+  const void* value = nullptr;
+};
+
+struct IWriteNode : Node {
+  ModBase* mod = nullptr;
+  IVersion version;
+  IWriteNode() : Node(Kind::IWrite) {}
+  virtual bool same_as_previous() const = 0;
+};
+
 struct HookNode : Node {
   const Label* label = nullptr;
   HookNode() : Node(Kind::Hook) {}
@@ -172,6 +197,7 @@ struct ModBase {
   bool input = false;
   bool written = false;
   bool dead = false;
+  bool imperative = false;      // an IMod
   std::uint32_t bytes = 0;
   virtual ~ModBase() = default;
 };
@@ -182,6 +208,21 @@ struct Mod : ModBase {
 };
 template <class T>
 using Box = Mod<T>;  // ΔML's name
+
+// An imperative modifiable (ΔML IBox): written any number of times in one execution; a read sees
+// the latest write before it in the trace (or the initial value given at allocation).
+struct IModBase : ModBase {
+  IVersion first;           // the initial value's version
+  IVersion* last = &first;  // the latest version in time
+  IModBase() { imperative = true; }
+};
+template <class T>
+struct IMod : IModBase {
+  T initial{};
+  IMod() { first.value = &initial; }
+};
+template <class T>
+using IBox = IMod<T>;
 
 inline std::uint64_t canon_key(const ModBase* m) { return m ? m->name : 0x6e696cULL; }
 
@@ -212,7 +253,7 @@ class Runtime {
   template <class T>
   Mod<T>* input(const Label& label, std::uint64_t id, T value) {
     outside("input");
-    auto* m = make_mod<T>();
+    auto* m = make_mod<Mod<T>>();
     m->name = mix(label.hash, id);
     m->input = true;
     m->written = true;
@@ -254,7 +295,7 @@ class Runtime {
     R* r = make_node<R>(std::forward<F>(k));
     append(r);
     r->mod = m;
-    link_reader(r);
+    link_reader(r, &m->readers);
     r->k(static_cast<const T&>(m->value));
     r->end = append(make_node<EndNode>());
   }
@@ -273,32 +314,92 @@ class Runtime {
       dirty(m);
     }
   }
+  // Imperative modifiables (ΔML IBox): ialloc is keyed like alloc and sets the initial value.
+  template <class T, class... K>
+  IMod<T>* ialloc(const Label& label, T initial, const K&... keys) {
+    IMod<T>* m = alloc_impl<IMod<T>>(label, keys...);
+    if (!(m->initial == initial)) {
+      m->initial = std::move(initial);
+      requeue(m->first.readers);
+    }
+    return m;
+  }
+  template <class T, class F>
+  void iread(IMod<T>* m, F&& k) {
+    inside("iread");
+    if (m->dead) fail("iread of a discarded modifiable");
+    IVersion* v = m->last;
+    while (v->time && OrderList::before(now_, v->time)) v = v->vprev;  // latest write at or before now
+    using R = IReadImpl<T, std::decay_t<F>>;
+    R* r = make_node<R>(std::forward<F>(k));
+    append(r);
+    r->mod = m;
+    r->ver = v;
+    link_reader(r, &v->readers);
+    r->k(*static_cast<const T*>(v->value));
+    r->end = append(make_node<EndNode>());
+  }
+  template <class T>
+  void iwrite(IMod<T>* m, T value) {
+    inside("iwrite");
+    if (m->dead) fail("iwrite to a discarded modifiable");
+    auto* w = make_node<IWriteImpl<T>>(std::move(value));
+    append(w);
+    w->mod = m;
+    IVersion* v = &w->version;
+    v->time = w;
+    v->value = &w->value;
+    IVersion* p = m->last;
+    while (p->time && !OrderList::before(p->time, w)) p = p->vprev;
+    v->vprev = p;
+    v->vnext = p->vnext;
+    if (p->vnext) p->vnext->vprev = v;
+    else m->last = v;
+    p->vnext = v;
+    // The reads of p after this write now see it.
+    bool same = w->same_as_previous();
+    for (ReadNode* r = p->readers; r;) {
+      ReadNode* nx = r->rnext;
+      if (OrderList::before(w, r)) {
+        unlink_reader(r);
+        r->ver = v;
+        link_reader(r, &v->readers);
+        if (!same && r->heap < 0) heap_push(r);
+      }
+      r = nx;
+    }
+  }
+
   template <class T, class... K>
   Mod<T>* alloc(const Label& label, const K&... keys) {
+    return alloc_impl<Mod<T>>(label, keys...);
+  }
+  template <class M, class... K>
+  M* alloc_impl(const Label& label, const K&... keys) {
     inside("alloc");
     std::uint64_t h = label.hash;
     ((h = mix(h, canon_key(keys))), ...);
     ModBase* anchor = nullptr;
     ((anchor = anchor ? anchor : anchor_one(keys)), ...);
-    Mod<T>* m = nullptr;
+    M* m = nullptr;
     check_unique_key(label, h, anchor);
     if (finger_) {
-      if (AllocNode* a = find_alloc(h, tag<Mod<T>>(), anchor)) {
-        m = static_cast<Mod<T>*>(a->mod);
+      if (AllocNode* a = find_alloc(h, tag<M>(), anchor)) {
+        m = static_cast<M*>(a->mod);
         a->mod = nullptr;
         unindex(a);
         ++stats_.allocs_reused;
       }
     }
     if (!m) {
-      m = make_mod<T>();
+      m = make_mod<M>();
       m->name = h;
       ++live_owned_;
     }
     AllocNode* a = make_node<AllocNode>();
     append(a);
     a->hash = h;
-    a->tag = tag<Mod<T>>();
+    a->tag = tag<M>();
     a->mod = m;
     m->owner = a;
     index(a, anchor);
@@ -362,6 +463,19 @@ class Runtime {
     R result{};
     explicit MemoImpl(const Key& k) : key(k) {}
   };
+  template <class T, class F>
+  struct IReadImpl : ReadNode {
+    F k;
+    template <class G>
+    explicit IReadImpl(G&& g) : k(std::forward<G>(g)) {}
+    void rerun() override { k(*static_cast<const T*>(ver->value)); }
+  };
+  template <class T>
+  struct IWriteImpl : IWriteNode {
+    T value;
+    explicit IWriteImpl(T v) : value(std::move(v)) {}
+    bool same_as_previous() const override { return *static_cast<const T*>(version.vprev->value) == value; }
+  };
   template <class F>
   struct HookImpl : HookNode {
     F f;
@@ -413,11 +527,11 @@ class Runtime {
     ++live_nodes_;
     return n;
   }
-  template <class T>
-  Mod<T>* make_mod() {
-    void* p = raw_alloc(sizeof(Mod<T>));
-    auto* m = new (p) Mod<T>();
-    m->bytes = sizeof(Mod<T>);
+  template <class M>
+  M* make_mod() {
+    void* p = raw_alloc(sizeof(M));
+    auto* m = new (p) M();
+    m->bytes = sizeof(M);
     return m;
   }
   void free_node(Node* n);
@@ -427,7 +541,8 @@ class Runtime {
     now_ = n;
     return n;
   }
-  void link_reader(ReadNode* r);
+  void link_reader(ReadNode* r, ReadNode** head);
+  void requeue(ReadNode* readers);  // queues every read of a list (no consistency check)
   void unlink_reader(ReadNode* r);
   void dirty(ModBase* m);  // queues the live reads of m
 
