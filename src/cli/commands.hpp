@@ -9,6 +9,8 @@ namespace kmr::cli {
 using Argv = std::vector<std::string>;
 
 int audit_command(const Argv& args);
+int roots_command(const Argv& args);
+int simulate_command(const Argv& args);
 int bench_command(const Argv& args);
 
 }  // namespace kmr::cli

@@ -12,6 +12,13 @@ namespace {
 std::int64_t trailing_zeros(const Integer& m) { return static_cast<std::int64_t>(boost::multiprecision::lsb(abs(m))); }
 
 constexpr std::int64_t kMaxDecimalExponent = 100000;
+
+// Decimal digits to an Integer. Leading zeros are stripped first: Boost/GMP would read "0123" as octal.
+Integer from_decimal_digits(std::string_view digits) {
+  std::size_t first = digits.find_first_not_of('0');
+  if (first == std::string_view::npos) return Integer(0);
+  return Integer(std::string(digits.substr(first)));
+}
 }  // namespace
 
 Integer parse_integer(std::string_view text) {
@@ -20,7 +27,7 @@ Integer parse_integer(std::string_view text) {
   if (i == text.size()) throw InputError("not an integer: '" + std::string(text) + "'");
   for (std::size_t j = i; j < text.size(); ++j)
     if (text[j] < '0' || text[j] > '9') throw InputError("not an integer: '" + std::string(text) + "'");
-  Integer v(std::string(text.substr(i)));
+  Integer v = from_decimal_digits(text.substr(i));
   return text[0] == '-' ? Integer(-v) : v;
 }
 
@@ -126,7 +133,7 @@ Dyadic Dyadic::parse(std::string_view text) {
     exp10 += static_cast<std::int64_t>(parse_integer(e).convert_to<long long>());
   }
   if (exp10 > kMaxDecimalExponent || exp10 < -kMaxDecimalExponent) throw bad("exponent out of range");
-  Integer n(digits);
+  Integer n = from_decimal_digits(digits);
   if (negative) n = -n;
   if (n.is_zero()) return Dyadic();
   if (exp10 >= 0) return Dyadic(n * boost::multiprecision::pow(Integer(10), static_cast<unsigned>(exp10)));

@@ -8,7 +8,8 @@
 
 namespace kmr::exact {
 
-using Integer = boost::multiprecision::mpz_int;
+// Expression templates off: `auto x = a * b` must be a value, never a dangling expression.
+using Integer = boost::multiprecision::number<boost::multiprecision::gmp_int, boost::multiprecision::et_off>;
 
 // Sign of x: -1, 0 or +1.
 inline int sign(const Integer& x) { return x.sign(); }

@@ -37,7 +37,7 @@ NT det2(const NT& a, const NT& b, const NT& c, const NT& d) {
 template <class NT>
 NT det3(const NT& a, const NT& b, const NT& c, const NT& d, const NT& e, const NT& f, const NT& g,
         const NT& h, const NT& i) {
-  return a * det2(e, f, h, i) - b * det2(d, f, g, i) + c * det2(d, e, g, h);
+  return a * det2<NT>(e, f, h, i) - b * det2<NT>(d, f, g, i) + c * det2<NT>(d, e, g, h);
 }
 
 template <std::size_t D, class NT>
@@ -54,22 +54,23 @@ NT squared_distance(const Point<D, NT>& a, const Point<D, NT>& b) {
 
 template <class NT>
 NT orientation_value(const Point<2, NT>& a, const Point<2, NT>& b, const Point<2, NT>& c) {
-  return det2(b[0] - a[0], b[1] - a[1], c[0] - a[0], c[1] - a[1]);
+  auto u = b - a, v = c - a;
+  return det2<NT>(u[0], u[1], v[0], v[1]);
 }
 
 template <class NT>
 NT orientation_value(const Point<3, NT>& p, const Point<3, NT>& q, const Point<3, NT>& r,
                      const Point<3, NT>& s) {
   auto u = q - p, v = r - p, w = s - p;
-  return det3(u[0], u[1], u[2], v[0], v[1], v[2], w[0], w[1], w[2]);
+  return det3<NT>(u[0], u[1], u[2], v[0], v[1], v[2], w[0], w[1], w[2]);
 }
 
 template <class NT>
 NT side_of_oriented_circle_value(const Point<2, NT>& p, const Point<2, NT>& q, const Point<2, NT>& r,
                                  const Point<2, NT>& t) {
   auto a = p - t, b = q - t, c = r - t;
-  return det3(a[0], a[1], squared_norm<2, NT>(a), b[0], b[1], squared_norm<2, NT>(b), c[0], c[1],
-              squared_norm<2, NT>(c));
+  return det3<NT>(a[0], a[1], squared_norm<2, NT>(a), b[0], b[1], squared_norm<2, NT>(b), c[0], c[1],
+                  squared_norm<2, NT>(c));
 }
 
 template <class NT>
@@ -79,10 +80,10 @@ NT side_of_oriented_sphere_value(const Point<3, NT>& p, const Point<3, NT>& q, c
   auto a = p - t, b = q - t, c = r - t, d = s - t;
   NT la = squared_norm<3, NT>(a), lb = squared_norm<3, NT>(b), lc = squared_norm<3, NT>(c),
      ld = squared_norm<3, NT>(d);
-  NT mb = det3(a[0], a[1], a[2], c[0], c[1], c[2], d[0], d[1], d[2]);
-  NT ma = det3(b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]);
-  NT mc = det3(a[0], a[1], a[2], b[0], b[1], b[2], d[0], d[1], d[2]);
-  NT md = det3(a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2]);
+  NT mb = det3<NT>(a[0], a[1], a[2], c[0], c[1], c[2], d[0], d[1], d[2]);
+  NT ma = det3<NT>(b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]);
+  NT mc = det3<NT>(a[0], a[1], a[2], b[0], b[1], b[2], d[0], d[1], d[2]);
+  NT md = det3<NT>(a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2]);
   // det[[a,la],[b,lb],[c,lc],[d,ld]] = −la·ma + lb·mb − lc·mc + ld·md; CGAL's sign is its negation.
   return la * ma - lb * mb + lc * mc - ld * md;
 }

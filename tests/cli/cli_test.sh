@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# End-to-end checks of the kmr CLI against hand-derived outputs and its bad-input contract
+# (clear message naming the problem, exit status 2). Usage: cli_test.sh path/to/kmr
+set -u
+kmr=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0 failed=0
+
+expect_out() {  # expect_out NAME EXPECTED_STDOUT -- ARGS...
+  local name=$1 want=$2; shift 3
+  local got; got=$("$kmr" "$@" 2>"$tmp/err"); local rc=$?
+  if [ $rc -eq 0 ] && [ "$got" = "$want" ]; then passed=$((passed+1)); else
+    failed=$((failed+1)); echo "FAIL $name: rc=$rc"; echo "  want: $want"; echo "  got:  $got"; cat "$tmp/err"; fi
+}
+expect_error() {  # expect_error NAME STDERR_SUBSTRING -- ARGS...
+  local name=$1 want=$2; shift 3
+  "$kmr" "$@" >"$tmp/out" 2>"$tmp/err"; local rc=$?
+  if [ $rc -eq 2 ] && grep -qF -- "$want" "$tmp/err"; then passed=$((passed+1)); else
+    failed=$((failed+1)); echo "FAIL $name: rc=$rc (want 2), stderr:"; cat "$tmp/err"; fi
+}
+
+# t² − 2: roots ±√2; √2·1024 = 1448.15.
+expect_out sqrt2 '{"degree": 2, "distinct_real_roots": 2, "intervals": [{"k": 1448, "roots": 1, "sign_change": true}]}' -- roots -- -2 0 1
+expect_out sqrt2-window '{"degree": 2, "distinct_real_roots": 2, "intervals": [{"k": -1449, "roots": 1, "sign_change": true}, {"k": 1448, "roots": 1, "sign_change": true}]}' -- roots --from -4 --to 4 -- -2 0 1
+# t²: a double root at the lattice point 0; no sign change.
+expect_out double-root '{"degree": 2, "distinct_real_roots": 1, "intervals": [{"k": 0, "roots": 1, "sign_change": false}]}' -- roots --from -1 -- 0 0 1
+# (t−1)(t−1−2^-12): two roots closer than δ = 2^-10 share one interval, even count: no sign change.
+# = t² − (2 + 2^-12)t + (1 + 2^-12), times 4096: 4096t² − 8193t + 4097.
+expect_out cluster '{"degree": 2, "distinct_real_roots": 2, "intervals": [{"k": 1024, "roots": 2, "sign_change": false}]}' -- roots -- 4097 -8193 4096
+# (t − 3/2)³ · 8 = 8t³ − 36t² + 54t − 27: a triple root at the lattice point 1.5 (B = 1).
+expect_out triple '{"degree": 3, "distinct_real_roots": 1, "intervals": [{"k": 3, "roots": 1, "sign_change": true}]}' -- roots --lattice-bits 1 -- -27 54 -36 8
+# A root exactly at the window's end is outside [T0, T1); at its start, inside.
+expect_out window-end '{"degree": 1, "distinct_real_roots": 1, "intervals": []}' -- roots --lattice-bits 0 --from 0 --to 5 -- -5 1
+expect_out window-start '{"degree": 1, "distinct_real_roots": 1, "intervals": [{"k": 5, "roots": 1, "sign_change": true}]}' -- roots --lattice-bits 0 --from 5 --to 6 -- -5 1
+# Leading zeros are decimal, not octal (regression: Boost reads "010" as 8).
+expect_out leading-zeros '{"degree": 1, "distinct_real_roots": 1, "intervals": [{"k": 10, "roots": 1, "sign_change": true}]}' -- roots --lattice-bits 0 --from 0.0001220703125 -- -010 001
+expect_out constant '{"degree": 0, "distinct_real_roots": 0, "intervals": []}' -- roots -- 7
+expect_error zero-poly 'zero polynomial' -- roots -- 0 0
+expect_error no-coeffs 'no coefficients' -- roots --
+expect_error bad-coeff "not an integer: '1.5'" -- roots -- 1 1.5
+expect_error bad-window 'empty window' -- roots --from 3 --to 2 -- 1 1
+expect_error non-dyadic "'0.1'" -- roots --from 0.1 -- 1 1
+expect_error unknown-option "unknown option '--frob'" -- roots --frob 1 -- 1 1
+
+# Kinetic sorting: three points meeting at x = 5, t = 5 cross in one batch.
+printf '0 1\n10 -1\n5 0\n' >"$tmp/meet.txt"
+expect_out sort-meet '{"events": 2, "batches": 1, "max_batch": 2, "order": [1, 2, 0]}' -- simulate sort "$tmp/meet.txt" --until 20
+# Separated crossings: 0: t, 1: 3 (crosses at 3), 2: 10 − t (crosses 1 at 7, 0 at 5).
+printf '0 1\n3 0\n10 -1\n' >"$tmp/sep.txt"
+expect_out sort-separate '{"events": 3, "batches": 3, "max_batch": 1, "order": [2, 1, 0]}' -- simulate sort "$tmp/sep.txt" --until 8
+expect_out sort-early '{"events": 1, "batches": 1, "max_batch": 1, "order": [1, 0, 2]}' -- simulate sort "$tmp/sep.txt" --until 4
+printf '0 1\n3 0\n0 1\n' >"$tmp/dup.txt"
+expect_error sort-dup 'identical trajectories' -- simulate sort "$tmp/dup.txt"
+printf '0 1\n3 x\n' >"$tmp/bad.txt"
+expect_error sort-bad-line 'bad.txt:2' -- simulate sort "$tmp/bad.txt"
+expect_error sort-missing 'cannot open' -- simulate sort "$tmp/none.txt"
+expect_error sort-until 'not a multiple of the lattice step' -- simulate sort "$tmp/sep.txt" --until 0.0001220703125 --lattice-bits 2
+expect_error unknown-command "unknown command 'frob'" -- frob
+
+echo "cli: $passed passed, $failed failed"
+[ $failed -eq 0 ]
