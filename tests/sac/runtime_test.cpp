@@ -23,6 +23,17 @@ std::string error_of(F&& f) {
   return "";
 }
 
+// The ContractError message (or "") of running body inside rt.run.
+template <class F>
+std::string error_in_run(Runtime& rt, F&& body) {
+  return error_of([&] {
+    rt.run([&] {
+      body();
+      return 0;
+    });
+  });
+}
+
 TEST(SacRuntime, S1_3_EqualWriteDirtiesNothing) {
   RecordProperty("claim", "S1.3.1-change-propagation");
   Runtime rt;
@@ -205,37 +216,28 @@ TEST(SacRuntime, S1_3_LiveCountsReturnAfterUndoingAnEdit) {
 
 TEST(SacRuntime, MisuseReadingUnwrittenModifiable) {
   Runtime rt;
-  std::string e = error_of([&] {
-    rt.run([&] {
-      auto* c = rt.alloc<int>(kCell, 1);
-      rt.read(c, [](int) {});
-      return 0;
-    });
+  std::string e = error_in_run(rt, [&] {
+    auto* c = rt.alloc<int>(kCell, 1);
+    rt.read(c, [](int) {});
   });
   EXPECT_NE(e.find("before it was written"), std::string::npos) << e;
 }
 
 TEST(SacRuntime, MisuseWritingTwice) {
   Runtime rt;
-  std::string e = error_of([&] {
-    rt.run([&] {
-      auto* c = rt.alloc<int>(kCell, 1);
-      rt.write(c, 1);
-      rt.write(c, 2);
-      return 0;
-    });
+  std::string e = error_in_run(rt, [&] {
+    auto* c = rt.alloc<int>(kCell, 1);
+    rt.write(c, 1);
+    rt.write(c, 2);
   });
   EXPECT_NE(e.find("written twice"), std::string::npos) << e;
 }
 
 TEST(SacRuntime, MisuseAllocationKeyUsedTwiceInOneExecution) {
   Runtime rt;
-  std::string e = error_of([&] {
-    rt.run([&] {
-      rt.alloc<int>(kCell, 7);
-      rt.alloc<int>(kCell, 7);
-      return 0;
-    });
+  std::string e = error_in_run(rt, [&] {
+    rt.alloc<int>(kCell, 7);
+    rt.alloc<int>(kCell, 7);
   });
   EXPECT_NE(e.find("used twice in one execution"), std::string::npos) << e;
 }
@@ -243,11 +245,8 @@ TEST(SacRuntime, MisuseAllocationKeyUsedTwiceInOneExecution) {
 TEST(SacRuntime, MisuseWritingAnInputInsideARun) {
   Runtime rt;
   auto* in = rt.input<int>(kIn, 1, 0);
-  std::string e = error_of([&] {
-    rt.run([&] {
-      rt.write(in, 1);
-      return 0;
-    });
+  std::string e = error_in_run(rt, [&] {
+    rt.write(in, 1);
   });
   EXPECT_NE(e.find("input modifiable"), std::string::npos) << e;
 }
@@ -255,20 +254,14 @@ TEST(SacRuntime, MisuseWritingAnInputInsideARun) {
 TEST(SacRuntime, MisusePropagatingOrChangingDuringARun) {
   Runtime rt;
   auto* in = rt.input<int>(kIn, 1, 0);
-  std::string e1 = error_of([&] {
-    rt.run([&] {
-      rt.propagate();
-      return 0;
-    });
+  std::string e1 = error_in_run(rt, [&] {
+    rt.propagate();
   });
   EXPECT_NE(e1.find("propagate during a run"), std::string::npos) << e1;
   Runtime rt2;
   auto* in2 = rt2.input<int>(kIn, 1, 0);
-  std::string e2 = error_of([&] {
-    rt2.run([&] {
-      rt2.change(in2, 3);
-      return 0;
-    });
+  std::string e2 = error_in_run(rt2, [&] {
+    rt2.change(in2, 3);
   });
   EXPECT_NE(e2.find("change during a run"), std::string::npos) << e2;
   (void)in;
