@@ -11,5 +11,6 @@ using Argv = std::vector<std::string>;
 int audit_command(const Argv& args);
 int roots_command(const Argv& args);
 int simulate_command(const Argv& args);
+int bench_command(const Argv& args);
 
 }  // namespace kmr::cli

@@ -1,0 +1,160 @@
+#include "sac/order.hpp"
+
+#include <string>
+
+#include "exact/error.hpp"
+
+namespace kmr::sac {
+
+namespace {
+constexpr std::uint64_t kTopEnd = std::uint64_t{1} << 62;  // group labels lie in [0, kTopEnd)
+}
+
+OrderList::OrderList() {
+  auto* g = new OmGroup;
+  g->label = kTopEnd / 2;
+  g->first = &base_;
+  g->size = 1;
+  first_group_ = g;
+  groups_ = 1;
+  base_.group = g;
+  base_.label = 0;
+}
+
+OrderList::~OrderList() {
+  for (OmGroup* g = first_group_; g;) {
+    OmGroup* n = g->next;
+    delete g;
+    g = n;
+  }
+}
+
+// Spreads the stamps of g evenly over the 64-bit label space.
+void OrderList::relabel_group(OmGroup* g) {
+  std::uint64_t step = ~std::uint64_t{0} / (std::uint64_t{g->size} + 1);
+  std::uint64_t l = 0;
+  for (Stamp* s = g->first; s && s->group == g; s = s->next) {
+    s->label = l;
+    l += step;
+    ++relabels_;
+  }
+}
+
+// Bender et al. (2002): if g has no free label after it, find the smallest aligned label range
+// [lo, lo + 2^i) around g whose group count is below (2/T)^i (T ≈ 1.41) and spread its groups
+// evenly. Amortized O(log #groups) relabels per new group; a new group comes once per Θ(kGroupMax)
+// stamps, so stamps pay amortized O(1).
+OmGroup* OrderList::insert_group_after(OmGroup* g) {
+  std::uint64_t hi = g->next ? g->next->label : kTopEnd;
+  if (hi - g->label < 2) {
+    OmGroup *first = g, *last = g;
+    std::uint64_t count = 1;
+    double cap = 1;
+    bool done = false;
+    for (int i = 1; i <= 62 && !done; ++i) {
+      cap *= 1.41;
+      std::uint64_t size = std::uint64_t{1} << i;
+      std::uint64_t lo = g->label & ~(size - 1);
+      std::uint64_t end = lo + size;
+      while (first->prev && first->prev->label >= lo) first = first->prev, ++count;
+      while (last->next && last->next->label < end) last = last->next, ++count;
+      if (static_cast<double>(count + 1) <= cap && size / (count + 1) >= 2) {
+        std::uint64_t step = size / (count + 1), l = lo;
+        for (OmGroup* t = first;; t = t->next) {
+          t->label = l;
+          l += step;
+          ++relabels_;
+          if (t == last) break;
+        }
+        done = true;
+      }
+    }
+    if (!done) {  // more groups than the label space allows at this density: spread them all
+      std::uint64_t step = kTopEnd / (groups_ + 2), l = step;
+      for (OmGroup* t = first_group_; t; t = t->next, l += step) {
+        t->label = l;
+        ++relabels_;
+      }
+    }
+    hi = g->next ? g->next->label : kTopEnd;
+    KMR_CHECK(hi - g->label >= 2, "OrderList: no free group label after relabelling");
+  }
+  auto* h = new OmGroup;
+  h->label = g->label + (hi - g->label) / 2;
+  h->prev = g;
+  h->next = g->next;
+  if (g->next) g->next->prev = h;
+  g->next = h;
+  ++groups_;
+  return h;
+}
+
+void OrderList::remove_group(OmGroup* g) {
+  if (g->prev) g->prev->next = g->next;
+  else first_group_ = g->next;
+  if (g->next) g->next->prev = g->prev;
+  --groups_;
+  delete g;
+}
+
+void OrderList::split(OmGroup* g) {
+  OmGroup* h = insert_group_after(g);
+  ++splits_;
+  Stamp* s = g->first;
+  for (std::uint32_t i = 0; i < g->size / 2; ++i) s = s->next;
+  h->first = s;
+  std::uint32_t moved = 0;
+  for (; s && s->group == g; s = s->next) {
+    s->group = h;
+    ++moved;
+  }
+  g->size -= moved;
+  h->size = moved;
+  relabel_group(g);
+  relabel_group(h);
+}
+
+void OrderList::insert_after(Stamp* x, Stamp* y) {
+  if (x->group->size >= kGroupMax) split(x->group);
+  OmGroup* g = x->group;
+  Stamp* nx = x->next;
+  std::uint64_t hi = (nx && nx->group == g) ? nx->label : ~std::uint64_t{0};
+  if (hi - x->label < 2) {
+    relabel_group(g);
+    hi = (nx && nx->group == g) ? nx->label : ~std::uint64_t{0};
+  }
+  y->label = x->label + (hi - x->label) / 2;
+  y->group = g;
+  y->prev = x;
+  y->next = nx;
+  if (nx) nx->prev = y;
+  else last_ = y;
+  x->next = y;
+  ++g->size;
+  ++size_;
+}
+
+void OrderList::remove(Stamp* y) {
+  KMR_CHECK(y != &base_, "OrderList: the base stamp cannot be removed");
+  OmGroup* g = y->group;
+  if (g->first == y) g->first = (y->next && y->next->group == g) ? y->next : nullptr;
+  y->prev->next = y->next;
+  if (y->next) y->next->prev = y->prev;
+  else last_ = y->prev;
+  --size_;
+  if (--g->size == 0) remove_group(g);
+  y->prev = y->next = nullptr;
+  y->group = nullptr;
+}
+
+void OrderList::check() const {
+  std::size_t n = 0;
+  for (const Stamp* s = &base_; s; s = s->next) {
+    ++n;
+    if (s->next) KMR_CHECK(before(s, s->next), "OrderList: labels do not increase at stamp " + std::to_string(n));
+    KMR_CHECK(s->group->first != nullptr, "OrderList: group without first stamp");
+  }
+  KMR_CHECK(n == size_, "OrderList: size mismatch");
+}
+
+}  // namespace kmr::sac

@@ -1,0 +1,75 @@
+#pragma once
+// OrderList: the order-maintenance list of timestamps behind the trace (§1.3.1: "function calls get
+// assigned two time stamps ... so that the function calls can be ordered sequentially").
+// Two-level labelling (Dietz–Sleator; Bender et al. 2002): stamps live in groups of at most
+// kGroupMax with 64-bit labels inside the group; groups carry 62-bit labels, relabelled over the
+// smallest sparse-enough aligned label range (Bender et al.'s density thresholds). Guarantees (each tested in tests/sac/order_test.cpp):
+//  * before(a, b) is the list order, for every pair of live stamps, after any sequence of
+//    insert_after / remove, including adversarial patterns (always after the same stamp, always
+//    after the newest, alternating, front-heavy);
+//  * insert_after and remove are amortized O(1); before is O(1) worst case;
+//  * check() verifies that labels increase strictly along the list (group, then item label).
+// Stamps are intrusive: the trace nodes of the runtime derive from Stamp.
+#include <cstddef>
+#include <cstdint>
+
+namespace kmr::sac {
+
+struct OmGroup;
+
+struct Stamp {
+  OmGroup* group = nullptr;
+  std::uint64_t label = 0;
+  Stamp* prev = nullptr;
+  Stamp* next = nullptr;
+};
+
+struct OmGroup {
+  std::uint64_t label = 0;
+  OmGroup* prev = nullptr;
+  OmGroup* next = nullptr;
+  Stamp* first = nullptr;
+  std::uint32_t size = 0;
+};
+
+class OrderList {
+ public:
+  static constexpr std::uint32_t kGroupMax = 64;
+
+  OrderList();
+  ~OrderList();
+  OrderList(const OrderList&) = delete;
+  OrderList& operator=(const OrderList&) = delete;
+
+  Stamp* base() { return &base_; }  // the first stamp; never removed
+  const Stamp* base() const { return &base_; }
+  Stamp* last() { return last_; }
+  void insert_after(Stamp* x, Stamp* y);  // y (unlinked) goes right after x
+  void remove(Stamp* y);                  // unlinks y (not the base)
+  static bool before(const Stamp* a, const Stamp* b) {
+    return a->group == b->group ? a->label < b->label : a->group->label < b->group->label;
+  }
+
+  std::size_t size() const { return size_; }  // stamps, base included
+  std::size_t groups() const { return groups_; }
+  std::uint64_t relabels() const { return relabels_; }  // stamps or groups given a new label
+  std::uint64_t splits() const { return splits_; }
+  std::size_t bytes() const { return groups_ * sizeof(OmGroup); }
+  void check() const;  // throws ContractError if the labels do not increase along the list
+
+ private:
+  void relabel_group(OmGroup* g);
+  void split(OmGroup* g);
+  OmGroup* insert_group_after(OmGroup* g);
+  void remove_group(OmGroup* g);
+
+  Stamp base_;
+  Stamp* last_ = &base_;
+  OmGroup* first_group_ = nullptr;
+  std::size_t size_ = 1;
+  std::size_t groups_ = 0;
+  std::uint64_t relabels_ = 0;
+  std::uint64_t splits_ = 0;
+};
+
+}  // namespace kmr::sac

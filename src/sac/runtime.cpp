@@ -1,0 +1,475 @@
+#include "sac/runtime.hpp"
+
+#include <pthread.h>
+
+#include <cstdlib>
+
+#include <cstdio>
+#include <exception>
+#include <new>
+
+namespace kmr::sac {
+
+// ---- memory: size-classed free lists (16-byte classes), so trace nodes cost no malloc call ----
+struct Runtime::Pool {
+  static constexpr std::size_t kClasses = 64;  // up to 1 KiB
+  static constexpr std::size_t kChunk = std::size_t{8} << 20;
+  std::vector<void*> free_list = std::vector<void*>(kClasses, nullptr);
+  std::vector<char*> chunks;
+  char* cur = nullptr;
+  std::size_t left = 0;
+  ~Pool() {
+    for (char* c : chunks) std::free(c);
+  }
+  static std::size_t rounded(std::size_t bytes) { return (bytes + 15) / 16 * 16; }
+  void* alloc(std::size_t bytes) {
+    std::size_t c = (bytes + 15) / 16;
+    if (c >= kClasses) return ::operator new(bytes);
+    if (void* p = free_list[c]) {
+      free_list[c] = *static_cast<void**>(p);
+      return p;
+    }
+    std::size_t b = c * 16;
+    if (left < b) {
+      cur = static_cast<char*>(std::aligned_alloc(4096, kChunk));
+      if (!cur) throw std::bad_alloc();
+
+      chunks.push_back(cur);
+      left = kChunk;
+    }
+    void* p = cur;
+    cur += b;
+    left -= b;
+    return p;
+  }
+  void free(void* p, std::size_t bytes) {
+    std::size_t c = (bytes + 15) / 16;
+    if (c >= kClasses) {
+      ::operator delete(p);
+      return;
+    }
+    *static_cast<void**>(p) = free_list[c];
+    free_list[c] = p;
+  }
+};
+
+Runtime::Runtime() : buckets_(1024, nullptr), pool_(new Pool) {}
+
+Runtime::~Runtime() {
+  for (Stamp* s = om_.base()->next; s;) {
+    Stamp* nx = s->next;
+    Node* n = static_cast<Node*>(s);
+    if (n->kind == Kind::Alloc) {
+      if (ModBase* m = static_cast<AllocNode*>(n)->mod) m->~ModBase();
+    }
+    n->~Node();
+    s = nx;
+  }
+  for (ModBase* m : dead_) m->~ModBase();
+  for (ModBase* m : inputs_) m->~ModBase();
+  delete pool_;
+}
+
+void* Runtime::raw_alloc(std::size_t bytes) {
+  bytes_ += Pool::rounded(bytes);
+  return pool_->alloc(bytes);
+}
+void Runtime::raw_free(void* p, std::size_t bytes) {
+  bytes_ -= Pool::rounded(bytes);
+  pool_->free(p, bytes);
+}
+
+void Runtime::free_node(Node* n) {
+  std::size_t b = n->bytes;
+  n->~Node();
+  raw_free(n, b);
+  --live_nodes_;
+}
+
+void Runtime::free_mod(ModBase* m) {
+  unindex_all(m);  // keys naming a freed modifiable can never match again (no address reuse)
+  std::size_t b = m->bytes;
+  if (!m->input) --live_owned_;
+  m->~ModBase();
+  raw_free(m, b);
+}
+
+// ---- errors -----------------------------------------------------------------------------------
+void Runtime::fail(const std::string& what) { throw ContractError("sac: " + what); }
+
+void Runtime::outside(const char* op) const {
+  if (running_) fail(std::string(op) + " during a run or change propagation");
+}
+
+void Runtime::inside_failed(const char* op) const {
+  if (in_undo_) fail(std::string(op) + " inside an undo hook");
+  fail(std::string(op) + " outside a run (trace operations need rt.run or propagate)");
+}
+
+static std::string hex(std::uint64_t v) {
+  char buf[20];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+  return buf;
+}
+
+void Runtime::check_readable(const ModBase* m) const {
+  if (m->dead) fail("read of a discarded modifiable " + hex(m->name));
+  if (m->input) return;
+  if (!m->written || !m->writer || !OrderList::before(m->writer, now_))
+    fail("read of modifiable " + hex(m->name) + " before it was written in this execution");
+}
+
+void Runtime::check_writable(const ModBase* m) const {
+  if (m->input) fail("write to input modifiable " + hex(m->name) + " inside a run (use change outside runs)");
+  if (m->dead) fail("write to a discarded modifiable " + hex(m->name));
+  if (m->writer && !in_window(m->writer))
+    fail("modifiable " + hex(m->name) + " written twice in one execution");
+}
+
+// ---- readers and the queue of affected reads --------------------------------------------------
+void Runtime::link_reader(ReadNode* r, ReadNode** head) {
+  r->rhead = head;
+  r->rprev = nullptr;
+  r->rnext = *head;
+  if (*head) (*head)->rprev = r;
+  *head = r;
+}
+
+void Runtime::unlink_reader(ReadNode* r) {
+  if (r->rprev) r->rprev->rnext = r->rnext;
+  else *r->rhead = r->rnext;
+  if (r->rnext) r->rnext->rprev = r->rprev;
+  r->rprev = r->rnext = nullptr;
+}
+
+void Runtime::requeue(ReadNode* readers) {
+  for (ReadNode* r = readers; r; r = r->rnext)
+    if (r->heap < 0) heap_push(r);
+}
+
+void Runtime::dirty(ModBase* m) {
+  for (ReadNode* r = m->readers; r; r = r->rnext) {
+    if (r->heap >= 0) continue;
+    if (running_ && !OrderList::before(now_, r))
+      fail("write to modifiable " + hex(m->name) +
+           " affects a read earlier in the trace: the program is not consistent");
+    heap_push(r);
+  }
+}
+
+void Runtime::heap_up(std::size_t i) {
+  ReadNode* x = heap_[i];
+  while (i > 0) {
+    std::size_t p = (i - 1) / 2;
+    if (!OrderList::before(x, heap_[p])) break;
+    heap_[i] = heap_[p];
+    heap_[i]->heap = static_cast<std::int64_t>(i);
+    i = p;
+  }
+  heap_[i] = x;
+  x->heap = static_cast<std::int64_t>(i);
+}
+
+void Runtime::heap_down(std::size_t i) {
+  ReadNode* x = heap_[i];
+  std::size_t n = heap_.size();
+  for (;;) {
+    std::size_t c = 2 * i + 1;
+    if (c >= n) break;
+    if (c + 1 < n && OrderList::before(heap_[c + 1], heap_[c])) ++c;
+    if (!OrderList::before(heap_[c], x)) break;
+    heap_[i] = heap_[c];
+    heap_[i]->heap = static_cast<std::int64_t>(i);
+    i = c;
+  }
+  heap_[i] = x;
+  x->heap = static_cast<std::int64_t>(i);
+}
+
+void Runtime::heap_push(ReadNode* r) {
+  heap_.push_back(r);
+  heap_up(heap_.size() - 1);
+}
+
+ReadNode* Runtime::heap_pop() {
+  ReadNode* top = heap_[0];
+  heap_erase(top);
+  return top;
+}
+
+void Runtime::heap_erase(ReadNode* r) {
+  std::size_t i = static_cast<std::size_t>(r->heap);
+  ReadNode* last = heap_.back();
+  heap_.pop_back();
+  r->heap = -1;
+  if (last != r) {
+    heap_[i] = last;
+    last->heap = static_cast<std::int64_t>(i);
+    heap_up(i);
+    heap_down(static_cast<std::size_t>(last->heap));
+  }
+}
+
+// ---- key index --------------------------------------------------------------------------------
+void Runtime::index(KeyedNode* n, ModBase* anchor) {
+  if (anchor) {
+    n->global = false;
+    n->hnext = anchor->keyed;
+    if (anchor->keyed) anchor->keyed->hpprev = &n->hnext;
+    anchor->keyed = n;
+    n->hpprev = &anchor->keyed;
+    return;
+  }
+  if (indexed_ + 1 > buckets_.size()) {
+    std::vector<KeyedNode*> old(buckets_.size() * 2, nullptr);
+    old.swap(buckets_);
+    indexed_ = 0;
+    for (KeyedNode* b : old)
+      for (KeyedNode* k = b; k;) {
+        KeyedNode* nx = k->hnext;
+        index(k, nullptr);
+        k = nx;
+      }
+  }
+  KeyedNode** b = &buckets_[n->hash & (buckets_.size() - 1)];
+  n->hnext = *b;
+  if (*b) (*b)->hpprev = &n->hnext;
+  *b = n;
+  n->hpprev = b;
+  n->global = true;
+  ++indexed_;
+}
+
+void Runtime::unindex(KeyedNode* n) {
+  if (!n->hpprev) return;
+  *n->hpprev = n->hnext;
+  if (n->hnext) n->hnext->hpprev = n->hpprev;
+  n->hnext = nullptr;
+  n->hpprev = nullptr;
+  if (n->global) --indexed_;
+}
+
+AllocNode* Runtime::find_alloc(std::uint64_t h, const void* t, const ModBase* anchor) const {
+  AllocNode* best = nullptr;
+  for (KeyedNode* n = chain(h, anchor); n; n = n->hnext) {
+    if (n->hash != h || n->tag != t || n->kind != Kind::Alloc) continue;
+    auto* a = static_cast<AllocNode*>(n);
+    if (!a->mod || !in_window(a)) continue;
+    if (!best || OrderList::before(a, best)) best = a;
+  }
+  return best;
+}
+
+// A live allocation with the same key before the current time belongs to this execution too.
+void Runtime::check_unique_key(const Label& label, std::uint64_t h, const ModBase* anchor) const {
+  for (KeyedNode* n = chain(h, anchor); n; n = n->hnext) {
+    if (n->hash != h || n->kind != Kind::Alloc || !static_cast<AllocNode*>(n)->mod) continue;
+    if (OrderList::before(n, now_) || n == now_)
+      fail(std::string("allocation key ") + label.name + ":" + hex(h) + " used twice in one execution");
+  }
+}
+
+// ---- change propagation (§1.3.1) --------------------------------------------------------------
+void Runtime::rerun(ReadNode* r) {
+  ++stats_.reads_reexecuted;
+  Scope s(*this, r, r->end);
+  r->rerun();
+  discard(now_, r->end);  // what was not reused inside r's interval
+}
+
+void Runtime::propagate_until(const Stamp* end) {
+  while (!heap_.empty() && (!end || OrderList::before(heap_[0], end))) rerun(heap_pop());
+}
+
+void Runtime::propagate() {
+  outside("propagate");
+  {
+    Scope s(*this, om_.base(), nullptr);
+    propagate_until(nullptr);
+  }
+  collect_dead();
+}
+
+void Runtime::discard(Stamp* from, Stamp* to) {
+  for (Stamp* s = from->next; s != to;) {
+    Stamp* nx = s->next;
+    kill(static_cast<Node*>(s));
+    s = nx;
+  }
+}
+
+void Runtime::kill(Node* n) {
+  switch (n->kind) {
+    case Kind::ReadStart: {
+      auto* r = static_cast<ReadNode*>(n);
+      unlink_reader(r);
+      if (r->heap >= 0) heap_erase(r);
+      break;
+    }
+    case Kind::MemoStart:
+      unindex(static_cast<KeyedNode*>(n));
+      break;
+    case Kind::Alloc: {
+      auto* a = static_cast<AllocNode*>(n);
+      unindex(a);
+      if (ModBase* m = a->mod) {
+        m->dead = true;
+        m->owner = nullptr;
+        dead_.push_back(m);
+      }
+      break;
+    }
+    case Kind::Write: {
+      auto* w = static_cast<WriteNode*>(n);
+      if (w->mod->writer == w) w->mod->writer = nullptr;
+      break;
+    }
+    case Kind::IWrite: {
+      // The reads of this version see the previous one again.
+      auto* w = static_cast<IWriteNode*>(n);
+      IVersion* v = &w->version;
+      IVersion* p = v->vprev;
+      bool same = w->same_as_previous();
+      while (ReadNode* r = v->readers) {
+        unlink_reader(r);
+        r->ver = p;
+        link_reader(r, &p->readers);
+        if (!same && r->heap < 0) heap_push(r);
+      }
+      p->vnext = v->vnext;
+      if (v->vnext) v->vnext->vprev = p;
+      else static_cast<IModBase*>(w->mod)->last = p;
+      break;
+    }
+    case Kind::Hook: {
+      in_undo_ = true;
+      try {
+        static_cast<HookNode*>(n)->undo();
+      } catch (...) {
+        in_undo_ = false;
+        throw;
+      }
+      in_undo_ = false;
+      ++stats_.hooks_run;
+      break;
+    }
+    case Kind::End:
+      break;
+  }
+  om_.remove(n);
+  free_node(n);
+  ++stats_.nodes_discarded;
+}
+
+void Runtime::collect_dead() {
+  for (ModBase* m : dead_) {
+    KMR_CHECK(m->readers == nullptr, "sac: a discarded modifiable " + hex(m->name) + " is still read by live trace");
+    KMR_CHECK(m->writer == nullptr, "sac: a discarded modifiable " + hex(m->name) + " is still written by live trace");
+    if (m->imperative) {
+      auto* im = static_cast<IModBase*>(m);
+      KMR_CHECK(im->first.readers == nullptr && im->last == &im->first,
+                "sac: a discarded imperative modifiable " + hex(m->name) + " is still read or written by live trace");
+    }
+    free_mod(m);
+  }
+  dead_.clear();
+}
+
+void Runtime::reset() {
+  outside("reset");
+  {
+    Scope s(*this, om_.base(), nullptr);
+    discard(om_.base(), nullptr);
+  }
+  collect_dead();
+}
+
+void Runtime::release(ModBase* m) {
+  outside("release");
+  if (!m->input) fail("release: only input modifiables are released by their owner");
+  if (m->readers) fail("release of input " + hex(m->name) + " that live trace still reads (propagate first)");
+  inputs_.erase(m);
+  free_mod(m);
+}
+
+// ---- introspection ----------------------------------------------------------------------------
+std::string Runtime::signature() const {
+  std::string out;
+  for (const Stamp* s = om_.base()->next; s; s = s->next) {
+    const Node* n = static_cast<const Node*>(s);
+    switch (n->kind) {
+      case Kind::ReadStart:
+        out += "R" + hex(static_cast<const ReadNode*>(n)->mod->name);
+        break;
+      case Kind::End:
+        out += ")";
+        break;
+      case Kind::MemoStart: {
+        auto* m = static_cast<const MemoNode*>(n);
+        out += "M";
+        out += m->label->name;
+        out += ":" + hex(m->hash);
+        break;
+      }
+      case Kind::Alloc: {
+        auto* a = static_cast<const AllocNode*>(n);
+        out += "A" + hex(a->hash);
+        break;
+      }
+      case Kind::Write:
+        out += "W" + hex(static_cast<const WriteNode*>(n)->mod->name);
+        break;
+      case Kind::IWrite:
+        out += "I" + hex(static_cast<const IWriteNode*>(n)->mod->name);
+        break;
+      case Kind::Hook:
+        out += "H";
+        out += static_cast<const HookNode*>(n)->label->name;
+        break;
+    }
+    out += ' ';
+  }
+  return out;
+}
+
+Stats Runtime::stats() const {
+  Stats s = stats_;
+  s.trace_nodes = live_nodes_;
+  s.live_mods = live_owned_;
+  s.input_mods = inputs_.size();
+  s.bytes = bytes_ + om_.bytes() + buckets_.capacity() * sizeof(void*) + heap_.capacity() * sizeof(void*);
+  s.om_relabels = om_.relabels();
+  return s;
+}
+
+// ---- big stacks -------------------------------------------------------------------------------
+namespace {
+struct StackJob {
+  const std::function<void()>* f;
+  std::exception_ptr error;
+};
+void* stack_trampoline(void* p) {
+  auto* job = static_cast<StackJob*>(p);
+  try {
+    (*job->f)();
+  } catch (...) {
+    job->error = std::current_exception();
+  }
+  return nullptr;
+}
+}  // namespace
+
+void with_stack(std::size_t bytes, const std::function<void()>& f) {
+  pthread_attr_t attr;
+  pthread_attr_init(&attr);
+  KMR_CHECK(pthread_attr_setstacksize(&attr, bytes) == 0, "sac::with_stack: bad stack size");
+  StackJob job{&f, nullptr};
+  pthread_t t;
+  int rc = pthread_create(&t, &attr, stack_trampoline, &job);
+  pthread_attr_destroy(&attr);
+  KMR_CHECK(rc == 0, "sac::with_stack: cannot create a thread with a stack of " + std::to_string(bytes) + " bytes");
+  pthread_join(t, nullptr);
+  if (job.error) std::rethrow_exception(job.error);
+}
+
+}  // namespace kmr::sac

@@ -1,0 +1,624 @@
+#pragma once
+// kmr::sac — a self-adjusting computation runtime in the CEAL / ΔML style (thesis §1.3, App. A.2).
+//
+// Vocabulary (ΔML → here): `Box` modifiable → Mod<T>, `IBox` → IMod<T> (rt.ialloc / iread /
+// iwrite); `Box.get $ m` → rt.read(m, k);
+// `put` / `PutMemoTable.mkPut` keyed allocation → rt.alloc<T>(label, keys...); `mfun` memoized
+// function → rt.memo<R>(label, key, body); `Box.Meta.new/change/deref` → rt.input / rt.change /
+// rt.deref; `Adaptive.Meta.propagate` → rt.propagate(). A traceable value whose changes come from
+// outside (a kinetic certificate's outcome) is an input modifiable: Traceable<T> (below).
+//
+// Guarantees (tested in tests/sac and proptests/sac; see spec/sac.md):
+//  * Change propagation re-executes affected reads in increasing start time; after propagate() the
+//    trace equals, token for token (signature()), the trace of a from-scratch run on the current
+//    input, and the live counts (trace nodes, owned modifiables) are equal (§1.3.1, §1.3.2).
+//  * A write of a value equal (==) to the current one dirties nothing.
+//  * IMod<T> (ΔML IBox) may be written many times in one execution: a read sees the latest write at
+//    or before its time (or the initial value from ialloc); inserting or discarding a write re-runs
+//    exactly the reads whose visible value changed.
+//  * A memoized call is reused only if its interval lies inside the interval being re-executed and
+//    after the current time (Acar's rule); the initial run never reuses.
+//  * alloc under a key found in the interval being re-executed returns the same modifiable;
+//    allocation keys are unique within an execution (a repeated key throws ContractError: reusing
+//    one modifiable in two roles would corrupt the computation).
+//  * Trace that is not reused is discarded; discarding runs its undo hooks (on_discard) in time
+//    order; modifiables allocated in discarded trace are freed at the end of propagate().
+//  * Misuse throws kmr::ContractError with a message naming it: reading an unwritten modifiable,
+//    writing a modifiable twice in one execution, an allocation key used twice in one execution,
+//    writing an input inside a run, trace operations outside a run or inside an undo hook,
+//    propagate/change/release during a run, releasing an input that still has readers. (A write that
+//    would affect an earlier read is also refused; with write-once modifiables it is a defensive
+//    check that no test can reach.)
+//  * Deterministic: no result or signature depends on pointer values or hash-table order.
+// Closures given to read/memo/on_discard are stored and may be re-run: capture by value.
+#include <cstdint>
+#include <cstring>
+#include <functional>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+#include "exact/error.hpp"
+#include "sac/order.hpp"
+
+namespace kmr::sac {
+
+// ---- canonical keys -------------------------------------------------------------------------
+constexpr std::uint64_t mix(std::uint64_t h, std::uint64_t v) {
+  std::uint64_t z = h ^ (v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2));
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+constexpr std::uint64_t fnv(const char* s) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (; *s; ++s) h = (h ^ static_cast<unsigned char>(*s)) * 1099511628211ULL;
+  return h;
+}
+
+// A function or allocation label (ΔML: the name of an mfun / put table).
+struct Label {
+  const char* name;
+  std::uint64_t hash;
+  constexpr explicit Label(const char* n) : name(n), hash(fnv(n)) {}
+};
+
+struct ModBase;
+template <class T>
+struct Mod;
+
+// canon_key(x): a 64-bit name of x that is the same in every run (modifiables by their allocation
+// names, never by address). Extend for your own types with an overload found by ADL.
+template <class T>
+  requires std::is_integral_v<T> || std::is_enum_v<T>
+constexpr std::uint64_t canon_key(T x) {
+  return static_cast<std::uint64_t>(x);
+}
+std::uint64_t canon_key(const ModBase* m);
+template <class A, class B>
+std::uint64_t canon_key(const std::pair<A, B>& p) {
+  return mix(canon_key(p.first), canon_key(p.second));
+}
+template <class... A>
+std::uint64_t canon_key(const std::tuple<A...>& t) {
+  std::uint64_t h = 0x5ac;
+  std::apply([&h](const auto&... x) { ((h = mix(h, canon_key(x))), ...); }, t);
+  return h;
+}
+
+// The anchor of a key: its first modifiable, on whose list the memo/alloc node is indexed (the
+// modifiable was just touched, so lookups stay in cache); keys without one use a hash table.
+template <class T>
+ModBase* anchor_one(const T& x) {
+  if constexpr (std::is_convertible_v<const T&, const ModBase*>)
+    return const_cast<ModBase*>(static_cast<const ModBase*>(x));
+  else
+    return nullptr;
+}
+template <class T>
+ModBase* anchor_of(const T& x) {
+  return anchor_one(x);
+}
+template <class... A>
+ModBase* anchor_of(const std::tuple<A...>& t) {
+  return std::apply([](const auto&... x) {
+    ModBase* a = nullptr;
+    ((a = a ? a : anchor_one(x)), ...);
+    return a;
+  }, t);
+}
+
+// ---- trace nodes ------------------------------------------------------------------------------
+enum class Kind : std::uint8_t { ReadStart, End, MemoStart, Alloc, Write, IWrite, Hook };
+
+struct Node : Stamp {
+  Kind kind;
+  std::uint32_t bytes = 0;
+  explicit Node(Kind k) : kind(k) {}
+  virtual ~Node() = default;
+};
+
+struct EndNode : Node {
+  EndNode() : Node(Kind::End) {}
+};
+
+struct IVersion;
+
+struct ReadNode : Node {
+  ModBase* mod = nullptr;
+  ReadNode** rhead = nullptr;  // head of the reader list it is on (a Mod's, or an IMod version's)
+  ReadNode* rprev = nullptr;
+  ReadNode* rnext = nullptr;
+  IVersion* ver = nullptr;     // for reads of an IMod: the version read
+  Node* end = nullptr;
+  std::int64_t heap = -1;  // index in the queue of affected reads, −1 if not queued
+  ReadNode() : Node(Kind::ReadStart) {}
+  virtual void rerun() = 0;
+};
+
+struct KeyedNode : Node {  // memo and alloc nodes, indexed by key hash
+  std::uint64_t hash = 0;
+  const void* tag = nullptr;  // identifies the key/value types
+  KeyedNode* hnext = nullptr;
+  KeyedNode** hpprev = nullptr;
+  bool global = false;  // in the runtime's hash table, else on its anchor modifiable's list
+  using Node::Node;
+};
+
+struct MemoNode : KeyedNode {
+  const Label* label = nullptr;
+  Node* end = nullptr;
+  MemoNode() : KeyedNode(Kind::MemoStart) {}
+};
+
+struct AllocNode : KeyedNode {
+  ModBase* mod = nullptr;  // null once the modifiable was reused by a later alloc
+  AllocNode() : KeyedNode(Kind::Alloc) {}
+};
+
+struct WriteNode : Node {
+  ModBase* mod = nullptr;
+  WriteNode() : Node(Kind::Write) {}
+};
+
+// A version of an imperative modifiable (ΔML IBox): its initial value, or the value of one write.
+// Versions are kept in time order; a read sees the latest version written before it.
+struct IVersion {
+  IVersion* vprev = nullptr;
+  IVersion* vnext = nullptr;
+  ReadNode* readers = nullptr;  // the live reads that see this version
+  const Stamp* time = nullptr;  // the write's time; null for the initial value
+  const void* value = nullptr;
+};
+
+struct IWriteNode : Node {
+  ModBase* mod = nullptr;
+  IVersion version;
+  IWriteNode() : Node(Kind::IWrite) {}
+  virtual bool same_as_previous() const = 0;
+};
+
+struct HookNode : Node {
+  const Label* label = nullptr;
+  HookNode() : Node(Kind::Hook) {}
+  virtual void undo() = 0;
+};
+
+struct ModBase {
+  std::uint64_t name = 0;       // canonical: allocation key, or the input's name
+  ReadNode* readers = nullptr;  // intrusive list of live reads
+  WriteNode* writer = nullptr;  // the write of the current execution (owned modifiables)
+  AllocNode* owner = nullptr;   // the allocation (null for inputs)
+  KeyedNode* keyed = nullptr;   // memo/alloc nodes whose key's first modifiable is this one
+  bool input = false;
+  bool written = false;
+  bool dead = false;
+  bool imperative = false;      // an IMod
+  std::uint32_t bytes = 0;
+  virtual ~ModBase() = default;
+};
+
+template <class T>
+struct Mod : ModBase {
+  T value{};
+};
+template <class T>
+using Box = Mod<T>;  // ΔML's name
+
+// An imperative modifiable (ΔML IBox): written any number of times in one execution; a read sees
+// the latest write before it in the trace (or the initial value given at allocation).
+struct IModBase : ModBase {
+  IVersion first;           // the initial value's version
+  IVersion* last = &first;  // the latest version in time
+  IModBase() { imperative = true; }
+};
+template <class T>
+struct IMod : IModBase {
+  T initial{};
+  IMod() { first.value = &initial; }
+};
+template <class T>
+using IBox = IMod<T>;
+
+inline std::uint64_t canon_key(const ModBase* m) { return m ? m->name : 0x6e696cULL; }
+
+// ---- statistics -------------------------------------------------------------------------------
+struct Stats {
+  std::uint64_t trace_nodes = 0;    // live trace nodes (reads, ends, memos, allocs, writes, hooks)
+  std::uint64_t live_mods = 0;      // live modifiables allocated by the computation
+  std::uint64_t input_mods = 0;     // live input modifiables
+  std::uint64_t bytes = 0;          // bytes in use: nodes + closures + modifiables + OM groups + index
+  std::uint64_t reads_reexecuted = 0;
+  std::uint64_t memo_hits = 0;
+  std::uint64_t memo_misses = 0;
+  std::uint64_t allocs_reused = 0;  // keyed allocations that returned an existing modifiable
+  std::uint64_t nodes_discarded = 0;
+  std::uint64_t hooks_run = 0;
+  std::uint64_t om_relabels = 0;
+};
+
+// ---- the runtime ------------------------------------------------------------------------------
+class Runtime {
+ public:
+  Runtime();
+  ~Runtime();
+  Runtime(const Runtime&) = delete;
+  Runtime& operator=(const Runtime&) = delete;
+
+  // Meta operations (outside runs): the owner's side of inputs and traceable values.
+  template <class T>
+  Mod<T>* input(const Label& label, std::uint64_t id, T value) {
+    outside("input");
+    auto* m = make_mod<Mod<T>>();
+    m->name = mix(label.hash, id);
+    m->input = true;
+    m->written = true;
+    m->value = std::move(value);
+    inputs_.insert(m);
+    return m;
+  }
+  template <class T>
+  void change(Mod<T>* m, T value) {
+    outside("change");
+    if (!m->input) fail("change: only input modifiables are changed from outside a run");
+    if (m->value == value) return;
+    m->value = std::move(value);
+    dirty(m);
+  }
+  void release(ModBase* m);  // frees an input that no live read depends on
+  template <class T>
+  const T& deref(const Mod<T>* m) const {
+    if (!m->written) fail("deref of an unwritten modifiable");
+    return m->value;
+  }
+
+  // The initial run: f's trace is appended to the trace. Returns f's result.
+  template <class F>
+  auto run(F&& f) {
+    outside("run");
+    Scope s(*this, om_.last(), nullptr);
+    return f();
+  }
+  // Change propagation (§1.3.1): re-executes affected reads in time order.
+  void propagate();
+
+  // Trace operations (inside runs).
+  template <class T, class F>
+  void read(Mod<T>* m, F&& k) {
+    inside("read");
+    check_readable(m);
+    using R = ReadImpl<T, std::decay_t<F>>;
+    R* r = make_node<R>(std::forward<F>(k));
+    append(r);
+    r->mod = m;
+    link_reader(r, &m->readers);
+    r->k(static_cast<const T&>(m->value));
+    r->end = append(make_node<EndNode>());
+  }
+  template <class T>
+  void write(Mod<T>* m, T value) {
+    inside("write");
+    check_writable(m);
+    WriteNode* w = make_node<WriteNode>();
+    append(w);
+    w->mod = m;
+    bool changed = !m->written || !(m->value == value);
+    m->writer = w;
+    if (changed) {
+      m->value = std::move(value);
+      m->written = true;
+      dirty(m);
+    }
+  }
+  // Imperative modifiables (ΔML IBox): ialloc is keyed like alloc and sets the initial value.
+  template <class T, class... K>
+  IMod<T>* ialloc(const Label& label, T initial, const K&... keys) {
+    IMod<T>* m = alloc_impl<IMod<T>>(label, keys...);
+    if (!(m->initial == initial)) {
+      m->initial = std::move(initial);
+      requeue(m->first.readers);
+    }
+    return m;
+  }
+  template <class T, class F>
+  void iread(IMod<T>* m, F&& k) {
+    inside("iread");
+    if (m->dead) fail("iread of a discarded modifiable");
+    IVersion* v = m->last;
+    while (v->time && OrderList::before(now_, v->time)) v = v->vprev;  // latest write at or before now
+    using R = IReadImpl<T, std::decay_t<F>>;
+    R* r = make_node<R>(std::forward<F>(k));
+    append(r);
+    r->mod = m;
+    r->ver = v;
+    link_reader(r, &v->readers);
+    r->k(*static_cast<const T*>(v->value));
+    r->end = append(make_node<EndNode>());
+  }
+  template <class T>
+  void iwrite(IMod<T>* m, T value) {
+    inside("iwrite");
+    if (m->dead) fail("iwrite to a discarded modifiable");
+    auto* w = make_node<IWriteImpl<T>>(std::move(value));
+    append(w);
+    w->mod = m;
+    IVersion* v = &w->version;
+    v->time = w;
+    v->value = &w->value;
+    IVersion* p = m->last;
+    while (p->time && !OrderList::before(p->time, w)) p = p->vprev;
+    v->vprev = p;
+    v->vnext = p->vnext;
+    if (p->vnext) p->vnext->vprev = v;
+    else m->last = v;
+    p->vnext = v;
+    // The reads of p after this write now see it.
+    bool same = w->same_as_previous();
+    for (ReadNode* r = p->readers; r;) {
+      ReadNode* nx = r->rnext;
+      if (OrderList::before(w, r)) {
+        unlink_reader(r);
+        r->ver = v;
+        link_reader(r, &v->readers);
+        if (!same && r->heap < 0) heap_push(r);
+      }
+      r = nx;
+    }
+  }
+
+  template <class T, class... K>
+  Mod<T>* alloc(const Label& label, const K&... keys) {
+    return alloc_impl<Mod<T>>(label, keys...);
+  }
+  template <class M, class... K>
+  M* alloc_impl(const Label& label, const K&... keys) {
+    inside("alloc");
+    std::uint64_t h = label.hash;
+    ((h = mix(h, canon_key(keys))), ...);
+    ModBase* anchor = nullptr;
+    ((anchor = anchor ? anchor : anchor_one(keys)), ...);
+    M* m = nullptr;
+    check_unique_key(label, h, anchor);
+    if (finger_) {
+      if (AllocNode* a = find_alloc(h, tag<M>(), anchor)) {
+        m = static_cast<M*>(a->mod);
+        a->mod = nullptr;
+        unindex(a);
+        ++stats_.allocs_reused;
+      }
+    }
+    if (!m) {
+      m = make_mod<M>();
+      m->name = h;
+      ++live_owned_;
+    }
+    AllocNode* a = make_node<AllocNode>();
+    append(a);
+    a->hash = h;
+    a->tag = tag<M>();
+    a->mod = m;
+    m->owner = a;
+    index(a, anchor);
+    return m;
+  }
+  template <class R, class Key, class F>
+  R memo(const Label& label, const Key& key, F&& body) {
+    inside("memo");
+    using M = MemoImpl<Key, R>;
+    std::uint64_t h = mix(label.hash, canon_key(key));
+    ModBase* anchor = anchor_of(key);
+    if (finger_) {
+      if (M* m = find_memo<M>(h, label, key, anchor)) {
+        ++stats_.memo_hits;
+        discard(now_, m);
+        propagate_until(m->end);
+        now_ = m->end;
+        return m->result;
+      }
+    }
+    ++stats_.memo_misses;
+    M* m = make_node<M>(key);
+    append(m);
+    m->hash = h;
+    m->tag = tag<M>();
+    m->label = &label;
+    R result = body();
+    m->end = append(make_node<EndNode>());
+    m->result = result;
+    index(m, anchor);
+    return result;
+  }
+  // Undo hook: f runs when this point of the trace is discarded (not on ~Runtime).
+  template <class F>
+  void on_discard(const Label& label, F&& f) {
+    inside("on_discard");
+    auto* h = make_node<HookImpl<std::decay_t<F>>>(std::forward<F>(f));
+    h->label = &label;
+    append(h);
+  }
+
+  // Introspection.
+  std::string signature() const;  // canonical trace: one token per node, in time order
+  Stats stats() const;
+  bool running() const { return running_; }
+  std::size_t queued() const { return heap_.size(); }
+  const OrderList& order() const { return om_; }
+  void reset();  // discards the whole trace (undo hooks run); inputs stay
+
+ private:
+  template <class T, class F>
+  struct ReadImpl : ReadNode {
+    F k;
+    template <class G>
+    explicit ReadImpl(G&& g) : k(std::forward<G>(g)) {}
+    void rerun() override { k(static_cast<const T&>(static_cast<Mod<T>*>(mod)->value)); }
+  };
+  template <class Key, class R>
+  struct MemoImpl : MemoNode {
+    Key key;
+    R result{};
+    explicit MemoImpl(const Key& k) : key(k) {}
+  };
+  template <class T, class F>
+  struct IReadImpl : ReadNode {
+    F k;
+    template <class G>
+    explicit IReadImpl(G&& g) : k(std::forward<G>(g)) {}
+    void rerun() override { k(*static_cast<const T*>(ver->value)); }
+  };
+  template <class T>
+  struct IWriteImpl : IWriteNode {
+    T value;
+    explicit IWriteImpl(T v) : value(std::move(v)) {}
+    bool same_as_previous() const override { return *static_cast<const T*>(version.vprev->value) == value; }
+  };
+  template <class F>
+  struct HookImpl : HookNode {
+    F f;
+    template <class G>
+    explicit HookImpl(G&& g) : f(std::forward<G>(g)) {}
+    void undo() override { f(); }
+  };
+  struct Scope {  // saves and restores (running, now, finger)
+    Runtime& rt;
+    bool running;
+    Stamp* now;
+    Stamp* finger;
+    Scope(Runtime& r, Stamp* n, Stamp* f) : rt(r), running(r.running_), now(r.now_), finger(r.finger_) {
+      rt.running_ = true;
+      rt.now_ = n;
+      rt.finger_ = f;
+    }
+    ~Scope() {
+      rt.running_ = running;
+      rt.now_ = now;
+      rt.finger_ = finger;
+    }
+  };
+  template <class T>
+  static const void* tag() {
+    static const char t = 0;
+    return &t;
+  }
+
+  [[noreturn]] static void fail(const std::string& what);
+  void outside(const char* op) const;
+  void inside(const char* op) const {
+    if (!running_ || in_undo_) inside_failed(op);
+  }
+  [[noreturn]] void inside_failed(const char* op) const;
+  void check_readable(const ModBase* m) const;
+  void check_writable(const ModBase* m) const;
+  bool in_window(const Stamp* s) const {  // strictly inside (now, finger)
+    return finger_ && OrderList::before(now_, s) && OrderList::before(s, finger_);
+  }
+
+  void* raw_alloc(std::size_t bytes);
+  void raw_free(void* p, std::size_t bytes);
+  template <class N, class... A>
+  N* make_node(A&&... a) {
+    void* p = raw_alloc(sizeof(N));
+    N* n = new (p) N(std::forward<A>(a)...);
+    n->bytes = sizeof(N);
+    ++live_nodes_;
+    return n;
+  }
+  template <class M>
+  M* make_mod() {
+    void* p = raw_alloc(sizeof(M));
+    auto* m = new (p) M();
+    m->bytes = sizeof(M);
+    return m;
+  }
+  void free_node(Node* n);
+  void free_mod(ModBase* m);
+  Node* append(Node* n) {
+    om_.insert_after(now_, n);
+    now_ = n;
+    return n;
+  }
+  void link_reader(ReadNode* r, ReadNode** head);
+  void requeue(ReadNode* readers);  // queues every read of a list (no consistency check)
+  void unlink_reader(ReadNode* r);
+  void dirty(ModBase* m);  // queues the live reads of m
+
+  // queue of affected reads, ordered by start time
+  void heap_push(ReadNode* r);
+  ReadNode* heap_pop();
+  void heap_erase(ReadNode* r);
+  void heap_up(std::size_t i);
+  void heap_down(std::size_t i);
+
+  // key index for memo and alloc nodes (lookup only; results never depend on its order)
+  void index(KeyedNode* n, ModBase* anchor);
+  void unindex(KeyedNode* n);
+  void unindex_all(ModBase* m) {
+    while (m->keyed) unindex(m->keyed);
+  }
+  KeyedNode* chain(std::uint64_t h, const ModBase* anchor) const {
+    return anchor ? anchor->keyed : buckets_[h & (buckets_.size() - 1)];
+  }
+  AllocNode* find_alloc(std::uint64_t h, const void* t, const ModBase* anchor) const;
+  void check_unique_key(const Label& label, std::uint64_t h, const ModBase* anchor) const;
+  template <class M, class Key>
+  M* find_memo(std::uint64_t h, const Label& label, const Key& key, const ModBase* anchor) const {
+    M* best = nullptr;
+    for (KeyedNode* n = chain(h, anchor); n; n = n->hnext) {
+      if (n->hash != h || n->tag != tag<M>() || n->kind != Kind::MemoStart) continue;
+      auto* m = static_cast<M*>(n);
+      if (m->label->hash != label.hash || !(m->key == key)) continue;
+      if (!in_window(m) || !OrderList::before(m->end, finger_)) continue;
+      if (!best || OrderList::before(m, best)) best = m;
+    }
+    return best;
+  }
+
+  void rerun(ReadNode* r);
+  void propagate_until(const Stamp* end);  // processes queued reads that start before end
+  void discard(Stamp* from, Stamp* to);    // kills every node strictly between
+  void kill(Node* n);
+  void collect_dead();
+
+  OrderList om_;
+  Stamp* now_ = nullptr;
+  Stamp* finger_ = nullptr;
+  bool running_ = false;
+  bool in_undo_ = false;
+  std::vector<ReadNode*> heap_;
+  std::vector<KeyedNode*> buckets_;
+  std::size_t indexed_ = 0;
+  std::vector<ModBase*> dead_;
+  std::unordered_set<ModBase*> inputs_;  // lookup and freeing only
+  std::uint64_t live_nodes_ = 0;
+  std::uint64_t live_owned_ = 0;
+  std::uint64_t bytes_ = 0;
+  Stats stats_;
+  struct Pool;
+  Pool* pool_;
+};
+
+// A traceable value (§1.3.3): the computation reads it like a modifiable; its owner (e.g. the
+// kinetic simulator for a certificate's outcome) sets it outside runs and then propagates.
+template <class T>
+class Traceable {
+ public:
+  Traceable(Runtime& rt, const Label& label, std::uint64_t id, T value)
+      : rt_(&rt), mod_(rt.input<T>(label, id, std::move(value))) {}
+  Mod<T>* mod() const { return mod_; }
+  const T& get() const { return rt_->deref(mod_); }
+  void set(T value) { rt_->change(mod_, std::move(value)); }
+
+ private:
+  Runtime* rt_;
+  Mod<T>* mod_;
+};
+
+// Runs f on a thread with a stack of `bytes` (deeply recursive programs such as list recursion
+// over 10^6 cells need more than the default stack). Exceptions propagate to the caller.
+void with_stack(std::size_t bytes, const std::function<void()>& f);
+
+}  // namespace kmr::sac

@@ -1,0 +1,151 @@
+#include "sacprograms/bench.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <random>
+
+#include "sacprograms/exptree.hpp"
+#include "sacprograms/session.hpp"
+
+namespace kmr::sacprograms {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+}  // namespace
+
+long long bench_value(const std::string& program, std::uint64_t r) {
+  if (program == "quickhull") {
+    long long x = static_cast<long long>(r & 0x1fffff) - (1 << 20);
+    long long y = static_cast<long long>((r >> 21) & 0x1fffff) - (1 << 20);
+    return encode_point(x, y);
+  }
+  return static_cast<long long>(r & 0x7fffffff);
+}
+
+std::vector<long long> bench_input(const std::string& program, std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<long long> v(n);
+  for (auto& x : v) x = bench_value(program, rng());
+  return v;
+}
+
+BenchRow bench_list(const std::string& name, std::size_t n, std::size_t edits, std::uint64_t seed) {
+  const ListProgram& p = list_program(name);
+  BenchRow row;
+  row.program = name;
+  row.n = n;
+  std::vector<long long> in = bench_input(name, n, seed);
+  {
+    SArena arena;
+    SCell* l = to_slist(arena, in);
+    p.twin(l, arena, &row.static_s);
+  }
+  std::vector<std::uint64_t> ids(n);
+  for (std::size_t i = 0; i < n; ++i) ids[i] = i + 1;
+  Runtime rt;
+  ListInput input(rt, in, ids);
+  auto t0 = Clock::now();
+  auto reader = p.build(rt, input.root());
+  row.initial_s = since(t0);
+  auto st = rt.stats();
+  row.trace_nodes = st.trace_nodes;
+  row.bytes_per_node = st.trace_nodes ? static_cast<double>(st.bytes) / static_cast<double>(st.trace_nodes) : 0;
+
+  // Edits: alternately delete a random element and insert a random one after a random element
+  // (or at the front).
+  std::mt19937_64 rng(seed ^ 0xed175);
+  std::uint64_t next_id = n + 1;
+  double total = 0;
+  for (std::size_t e = 0; e < edits; ++e) {
+    bool del = (e % 2 == 0) && input.size() > 0;
+    std::uint64_t r = rng();
+    List* cell = input.size() == 0 || r % (input.size() + 1) == 0 ? nullptr : input.random_cell(r);
+    long long v = bench_value(name, rng());
+    auto t1 = Clock::now();
+    if (del) input.erase(cell ? cell : input.random_cell(r));
+    else input.insert_after(cell, next_id++, v);
+    input.propagate();
+    total += since(t1);
+  }
+  row.edits = edits;
+  row.edit_s = edits ? total / static_cast<double>(edits) : 0;
+  row.overhead = row.static_s > 0 ? row.initial_s / row.static_s : 0;
+  row.speedup = row.edit_s > 0 ? row.static_s / row.edit_s : 0;
+  SArena arena;
+  row.output_ok = reader() == p.twin(to_slist(arena, input.values()), arena, nullptr);
+  return row;
+}
+
+BenchRow bench_exptree(std::size_t n, std::size_t edits, std::uint64_t seed) {
+  BenchRow row;
+  row.program = "exptree";
+  row.n = n;
+  PlainTree tree = PlainTree::random(std::max<std::size_t>(n, 1), seed);
+  auto t0 = Clock::now();
+  volatile long long sink = tree.eval();
+  (void)sink;
+  row.static_s = since(t0);
+  Runtime rt;
+  TreeInput input(rt, tree);
+  t0 = Clock::now();
+  Mod<long long>* out = sa_exptree(rt, input.root());
+  row.initial_s = since(t0);
+  auto st = rt.stats();
+  row.trace_nodes = st.trace_nodes;
+  row.bytes_per_node = st.trace_nodes ? static_cast<double>(st.bytes) / static_cast<double>(st.trace_nodes) : 0;
+  // Edits: insert (split a random leaf into an operator over two leaves), then delete it (merge).
+  std::mt19937_64 rng(seed ^ 0xed175);
+  std::vector<int> leaves = input.tree().leaves();
+  input.reserve(edits);  // keep vector growth of the harness out of the timings
+  double total = 0;
+  for (std::size_t e = 0; e < edits; e += 2) {
+    int leaf = leaves[rng() % leaves.size()];
+    auto t1 = Clock::now();
+    input.split(leaf, static_cast<int>(rng() % 3), static_cast<long long>(rng() % 1000));
+    input.propagate();
+    input.merge(leaf);
+    input.propagate();
+    total += since(t1);
+  }
+  std::size_t done = (edits + 1) / 2 * 2;
+  row.edits = done;
+  row.edit_s = done ? total / static_cast<double>(done) : 0;
+  row.overhead = row.static_s > 0 ? row.initial_s / row.static_s : 0;
+  row.speedup = row.edit_s > 0 ? row.static_s / row.edit_s : 0;
+  row.output_ok = rt.deref(out) == input.tree().eval();
+  return row;
+}
+
+std::vector<BenchRow> bench_all(std::size_t n, std::size_t edits, std::uint64_t seed, const std::vector<std::string>& only) {
+  std::vector<BenchRow> rows;
+  auto wanted = [&](const std::string& s) { return only.empty() || std::find(only.begin(), only.end(), s) != only.end(); };
+  // List recursion nests one frame group per element: give the run a stack sized for n.
+  std::size_t stack = std::max<std::size_t>(std::size_t{64} << 20, n * 2048);
+  sac::with_stack(stack, [&] {
+    for (const auto& p : list_programs())
+      if (wanted(p.name)) rows.push_back(bench_list(p.name, n, edits, seed));
+    if (wanted("exptree")) rows.push_back(bench_exptree(n, edits, seed));
+  });
+  return rows;
+}
+
+std::string bench_json(const std::vector<BenchRow>& rows) {
+  std::string out = "[\n";
+  char buf[512];
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const BenchRow& r = rows[i];
+    std::snprintf(buf, sizeof buf,
+                  "  {\"program\": \"%s\", \"n\": %zu, \"static_s\": %.6g, \"initial_s\": %.6g, \"overhead\": %.4g, "
+                  "\"edit_s\": %.6g, \"speedup\": %.6g, \"trace_nodes\": %llu, \"bytes_per_node\": %.4g, "
+                  "\"edits\": %zu, \"output_ok\": %s}%s\n",
+                  r.program.c_str(), r.n, r.static_s, r.initial_s, r.overhead, r.edit_s, r.speedup,
+                  static_cast<unsigned long long>(r.trace_nodes), r.bytes_per_node, r.edits,
+                  r.output_ok ? "true" : "false", i + 1 < rows.size() ? "," : "");
+    out += buf;
+  }
+  return out + "]\n";
+}
+
+}  // namespace kmr::sacprograms

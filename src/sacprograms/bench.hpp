@@ -1,0 +1,35 @@
+#pragma once
+// Measurements of the benchmark programs (kmr bench sac, kmr audit): one row per program with the
+// static twin's time, the initial self-adjusting run's time, their ratio (overhead), the mean time of
+// one random single-element insertion or deletion plus propagation, static ÷ edit (speedup), live
+// trace nodes and bytes per node. Guarantees: inputs and edits come from the seed only; every
+// edit's output is checked against the static twin at the end of the run (a row with
+// output_ok = false reports a wrong answer, it is never hidden).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace kmr::sacprograms {
+
+struct BenchRow {
+  std::string program;
+  std::size_t n = 0;
+  double static_s = 0, initial_s = 0, overhead = 0, edit_s = 0, speedup = 0;
+  std::uint64_t trace_nodes = 0;
+  double bytes_per_node = 0;
+  std::size_t edits = 0;
+  bool output_ok = false;
+};
+
+std::vector<long long> bench_input(const std::string& program, std::size_t n, std::uint64_t seed);
+long long bench_value(const std::string& program, std::uint64_t r);  // a random element
+
+BenchRow bench_list(const std::string& program, std::size_t n, std::size_t edits, std::uint64_t seed);
+BenchRow bench_exptree(std::size_t n, std::size_t edits, std::uint64_t seed);
+// All seven programs (map, filter, sum, quicksort, mergesort, quickhull, exptree), on a big stack.
+std::vector<BenchRow> bench_all(std::size_t n, std::size_t edits, std::uint64_t seed,
+                                const std::vector<std::string>& only = {});
+
+std::string bench_json(const std::vector<BenchRow>& rows);
+
+}  // namespace kmr::sacprograms
