@@ -12,10 +12,12 @@ namespace kmr::oracle::ws::detail {
 using Q = boost::multiprecision::mpq_rational;
 
 inline Q to_q(const exact::Dyadic& d) {
-  Q q(d.mantissa());
+  // Through GMP directly, whatever Boost options exact::Integer uses.
+  Q q;
+  mpq_set_z(q.backend().data(), d.mantissa().backend().data());
   const auto e = d.exponent();
-  if (e > 0) q *= Q(exact::Integer(1) << static_cast<unsigned>(e));
-  if (e < 0) q /= Q(exact::Integer(1) << static_cast<unsigned>(-e));
+  if (e > 0) mpq_mul_2exp(q.backend().data(), q.backend().data(), static_cast<mp_bitcnt_t>(e));
+  if (e < 0) mpq_div_2exp(q.backend().data(), q.backend().data(), static_cast<mp_bitcnt_t>(-e));
   return q;
 }
 

@@ -85,6 +85,21 @@ TEST(WsJudge, T3_3_4_StableWS3DIsWellSpacedAndSizeConforming) {
   judge_generated<3>(40, {2.0}, 1);
 }
 
+TEST(WsJudge, T3_3_4_StableWS4DJudgedWithCgalEpeckD) {
+  RecordProperty("claim", "T3.3.4");
+  if (!ws::cgal_4d_available()) GTEST_SKIP() << "CGAL dD Delaunay not built (Eigen3 missing)";
+  for (auto kind : {ws::gen::Kind::Uniform, ws::gen::Kind::Boundary}) {
+    auto in = ws::gen::make<4>(kind, 8, 1);
+    lib::Params p;
+    p.rho = 2.0;
+    p.beta = 4.0;
+    lib::WellSpacedSet<4> S(in, p);
+    std::string line = judge<4>(S, ws::gen::name(kind));
+    if (HasFailure()) return;
+    std::printf("  [4D] %s\n", line.c_str());
+  }
+}
+
 TEST(WsJudge, L3_3_3_SizeConformingWithDefaultParameters) {
   RecordProperty("claim", "L3.3.3");
   auto in = ws::gen::make<2>(ws::gen::Kind::Clustered, 300, 42);
