@@ -136,6 +136,16 @@ struct Polytope {
     return rank_of<D>(rows) + 1 >= D;
   }
 
+  static std::size_t shared_count(const std::vector<int>& a, const std::vector<int>& b) {
+    std::size_t n = 0;
+    for (std::size_t i = 0, j = 0; i < a.size() && j < b.size();) {
+      if (a[i] < b[j]) ++i;
+      else if (b[j] < a[i]) ++j;
+      else ++n, ++i, ++j;
+    }
+    return n;
+  }
+
   static std::vector<int> intersect(const std::vector<int>& a, const std::vector<int>& b) {
     std::vector<int> r;
     std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(r));
@@ -180,6 +190,7 @@ struct Polytope {
       if (s[a] >= 0) continue;
       for (std::size_t b = 0; b < vs.size(); ++b) {
         if (s[b] <= 0) continue;
+        if (shared_count(vs[a].planes, vs[b].planes) + 1 < D) continue;
         std::vector<int> shared = intersect(vs[a].planes, vs[b].planes);
         if (!on_common_edge(shared)) continue;
         Q t = s[a] / (s[a] - s[b]);
@@ -245,8 +256,12 @@ struct CellOracle<D>::Impl {
   }
 
   // Cell of v clipped to `box`; plane id of neighbour adj[v][k] is 2D + k.
+  // Nearest neighbours first: the polytope shrinks early, later cuts touch fewer vertices.
   Polytope<D> cell(std::size_t v, Polytope<D> box) const {
-    for (std::uint32_t u : adj[v]) box.clip(bisector<D>(q[v], q[u]));
+    std::vector<std::pair<Q, std::uint32_t>> order;
+    for (std::uint32_t u : adj[v]) order.emplace_back(dist2<D>(q[v], q[u]), u);
+    std::sort(order.begin(), order.end());
+    for (const auto& [d, u] : order) box.clip(bisector<D>(q[v], q[u]));
     return box;
   }
 
