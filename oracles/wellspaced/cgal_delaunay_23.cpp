@@ -14,7 +14,7 @@
 #include <utility>
 
 #include "exact/error.hpp"
-#include "ws_exact_q.hpp"
+#include "ws_cgal_ft.hpp"
 #include "ws_oracle.hpp"
 
 namespace kmr::oracle::ws {
@@ -24,12 +24,7 @@ using K = CGAL::Epeck;
 using FT = K::FT;
 using ET = CGAL::internal::Exact_field_selector<double>::Type;
 
-FT to_ft(const exact::Dyadic& d) {
-  double x;
-  if (detail::exact_double(d, x)) return FT(x);
-  detail::Q q = detail::to_q(d);
-  return FT(ET(q.backend().data()));
-}
+FT to_ft(const exact::Dyadic& d) { return detail::to_ft<FT, ET>(d); }
 
 using Vb2 = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
 using Tds2 = CGAL::Triangulation_data_structure_2<Vb2>;
@@ -40,6 +35,8 @@ using DT3 = CGAL::Delaunay_triangulation_3<K, Tds3>;
 
 K::Point_2 pt(const XPoint<2>& p) { return K::Point_2(to_ft(p[0]), to_ft(p[1])); }
 K::Point_3 pt(const XPoint<3>& p) { return K::Point_3(to_ft(p[0]), to_ft(p[1]), to_ft(p[2])); }
+DT2::Face_handle incident(DT2::Vertex_handle v) { return v->face(); }
+DT3::Cell_handle incident(DT3::Vertex_handle v) { return v->cell(); }
 
 template <class DT, std::size_t D>
 DT build(const std::vector<XPoint<D>>& pts) {
@@ -59,17 +56,21 @@ void finish(std::vector<std::vector<std::uint32_t>>& adj) {
   }
 }
 
-}  // namespace
+std::pair<std::uint32_t, std::uint32_t> ends(const DT2::Edge& e) {
+  return {e.first->vertex(DT2::cw(e.second))->info(), e.first->vertex(DT2::ccw(e.second))->info()};
+}
+std::pair<std::uint32_t, std::uint32_t> ends(const DT3::Edge& e) {
+  return {e.first->vertex(e.second)->info(), e.first->vertex(e.third)->info()};
+}
 
-template <>
-std::vector<std::vector<std::uint32_t>> cgal_delaunay_adjacency<2>(const std::vector<XPoint<2>>& pts) {
+// Sorted neighbour lists from the finite edges (works in every current dimension 1..D).
+template <class DT, std::size_t D>
+std::vector<std::vector<std::uint32_t>> adjacency(const std::vector<XPoint<D>>& pts) {
   std::vector<std::vector<std::uint32_t>> adj(pts.size());
   if (pts.size() < 2) return adj;
-  DT2 dt = build<DT2, 2>(pts);
+  DT dt = build<DT, D>(pts);
   for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
-    auto f = e->first;
-    int i = e->second;
-    std::uint32_t a = f->vertex(f->cw(i))->info(), b = f->vertex(f->ccw(i))->info();
+    auto [a, b] = ends(*e);
     adj[a].push_back(b);
     adj[b].push_back(a);
   }
@@ -77,48 +78,44 @@ std::vector<std::vector<std::uint32_t>> cgal_delaunay_adjacency<2>(const std::ve
   return adj;
 }
 
+// Index of a nearest site per query; each answer's vertex is the hint of the next location.
+template <class DT, std::size_t D>
+std::vector<std::uint32_t> nearest(const std::vector<XPoint<D>>& sites,
+                                   const std::vector<XPoint<D>>& queries) {
+  DT dt = build<DT, D>(sites);
+  std::vector<std::uint32_t> out;
+  out.reserve(queries.size());
+  typename DT::Vertex_handle last;
+  for (const auto& q : queries) {
+    last = last == typename DT::Vertex_handle() ? dt.nearest_vertex(pt(q))
+                                                : dt.nearest_vertex(pt(q), incident(last));
+    out.push_back(last->info());
+  }
+  return out;
+}
+
+}  // namespace
+
+template <>
+std::vector<std::vector<std::uint32_t>> cgal_delaunay_adjacency<2>(const std::vector<XPoint<2>>& pts) {
+  return adjacency<DT2, 2>(pts);
+}
+
 template <>
 std::vector<std::vector<std::uint32_t>> cgal_delaunay_adjacency<3>(const std::vector<XPoint<3>>& pts) {
-  std::vector<std::vector<std::uint32_t>> adj(pts.size());
-  if (pts.size() < 2) return adj;
-  DT3 dt = build<DT3, 3>(pts);
-  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
-    std::uint32_t a = e->first->vertex(e->second)->info(), b = e->first->vertex(e->third)->info();
-    adj[a].push_back(b);
-    adj[b].push_back(a);
-  }
-  finish(adj);
-  return adj;
+  return adjacency<DT3, 3>(pts);
 }
 
 template <>
 std::vector<std::uint32_t> cgal_nearest_site<2>(const std::vector<XPoint<2>>& sites,
                                                 const std::vector<XPoint<2>>& queries) {
-  DT2 dt = build<DT2, 2>(sites);
-  std::vector<std::uint32_t> out;
-  out.reserve(queries.size());
-  DT2::Face_handle hint;
-  for (const auto& q : queries) {
-    auto v = dt.nearest_vertex(pt(q), hint);
-    hint = v->face();
-    out.push_back(v->info());
-  }
-  return out;
+  return nearest<DT2, 2>(sites, queries);
 }
 
 template <>
 std::vector<std::uint32_t> cgal_nearest_site<3>(const std::vector<XPoint<3>>& sites,
                                                 const std::vector<XPoint<3>>& queries) {
-  DT3 dt = build<DT3, 3>(sites);
-  std::vector<std::uint32_t> out;
-  out.reserve(queries.size());
-  DT3::Cell_handle hint;
-  for (const auto& q : queries) {
-    auto v = dt.nearest_vertex(pt(q), hint);
-    hint = v->cell();
-    out.push_back(v->info());
-  }
-  return out;
+  return nearest<DT3, 3>(sites, queries);
 }
 
 }  // namespace kmr::oracle::ws

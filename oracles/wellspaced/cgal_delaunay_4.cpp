@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "exact/error.hpp"
-#include "ws_exact_q.hpp"
+#include "ws_cgal_ft.hpp"
 #include "ws_oracle.hpp"
 
 namespace kmr::oracle::ws {
@@ -27,12 +27,7 @@ using DT = CGAL::Delaunay_triangulation<K, TDS>;
 using FT = K::FT;
 using ET = CGAL::internal::Exact_field_selector<double>::Type;
 
-FT to_ft(const exact::Dyadic& d) {
-  double x;
-  if (detail::exact_double(d, x)) return FT(x);
-  detail::Q q = detail::to_q(d);
-  return FT(ET(q.backend().data()));
-}
+FT to_ft(const exact::Dyadic& d) { return detail::to_ft<FT, ET>(d); }
 
 }  // namespace
 
