@@ -6,7 +6,7 @@
 // layer is linked — the ratios ours/CGAL (targets: time ≤ 2×, size ≤ 1.5×). The exact oracle's
 // ρ-well-spacedness ratio max R/NN is printed for both outputs (R/NN of a Mesh_2 output is not
 // bounded by its radius-edge bound; it is reported for comparison only).
-// Usage: kmr_bench_wellspaced_mesh2 [n ...] [--reps K] [--rho R] [--no-judge]
+// Usage: kmr_bench_wellspaced_mesh2 [n ...] [--reps K] [--rho R (default √2)] [--no-judge]
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Delaunay_mesh_size_criteria_2.h>
@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -91,7 +92,9 @@ int main(int argc, char** argv) {
   if (ns.empty()) ns = {1000, 10000};
 #ifdef KMR_HAVE_WELLSPACED
   kmr::wellspaced::Params params;
-  if (rho > 0) params.rho = rho;
+  // Same quality bound as Mesh_2's B = √2 by default: in 2D a ρ-well-spaced set's Delaunay
+  // triangles have radius-edge ratio ≤ ρ (issue 4). The double nearest √2 is 1e-16 above it.
+  params.rho = rho > 0 ? rho : std::sqrt(2.0);
   std::printf("# StableWS rho=%g beta=%g vs CGAL Mesh_2 B=sqrt(2); uniform inputs in [0,1]^2\n",
               params.rho, params.beta);
   std::printf("%8s %10s %10s %10s %10s %9s %9s %10s %10s\n", "n", "cgal_s", "cgal_out", "kmr_s",
