@@ -73,8 +73,9 @@ std::vector<DPoint<D>> make(Kind kind, std::size_t n, std::uint64_t seed) {
       }
       break;
     }
-    case Kind::ClosePairs:  // pairs 2^-30 apart
-      for (std::size_t i = 0; i + 1 < n; i += 2) {
+    case Kind::ClosePairs: {  // a few pairs 2^-30 apart (spread Δ ≈ 2^30) among uniform points
+      const std::size_t pairs = std::max<std::size_t>(1, n / 40);
+      for (std::size_t i = 0; i < pairs; ++i) {
         DPoint<D> p = uniform_pt();
         for (auto& x : p) x = std::min(x, 0.5);
         DPoint<D> q = p;
@@ -82,7 +83,9 @@ std::vector<DPoint<D>> make(Kind kind, std::size_t n, std::uint64_t seed) {
         pts.push_back(p);
         pts.push_back(q);
       }
+      while (pts.size() < n) pts.push_back(uniform_pt());
       break;
+    }
     case Kind::Boundary: {  // all 2^D corners plus points on faces of the domain
       for (std::size_t m = 0; m < (std::size_t(1) << D); ++m) {
         DPoint<D> p;

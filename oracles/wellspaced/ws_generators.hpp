@@ -3,7 +3,7 @@
 // Guarantees: every point lies in [0,1]^D, coordinates are doubles (exact dyadics), no duplicates,
 // and the result depends only on (kind, n, seed). Degenerate families on purpose (design.md,
 // doctrine 4): grids (cocircular/cospherical), collinear, near-duplicate pairs (2^-30 apart),
-// domain boundary and corners, clusters.
+// domain boundary and corners, clusters. ClosePairs: max(1, n/40) pairs 2^-30 apart + uniform.
 #include <cstdint>
 #include <string>
 #include <vector>
