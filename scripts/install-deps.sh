@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(
   cmake ninja-build g++ make
-  libboost-dev libgmp-dev libmpfr-dev libcgal-dev
+  libboost-dev libgmp-dev libmpfr-dev libcgal-dev libeigen3-dev
   librapidcheck-dev libgtest-dev libgmock-dev libbenchmark-dev
   lcov clang-14 libclang-rt-14-dev llvm-14
 )
