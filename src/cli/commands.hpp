@@ -9,5 +9,6 @@ namespace kmr::cli {
 using Argv = std::vector<std::string>;
 
 int audit_command(const Argv& args);
+int wellspaced_command(const Argv& args);
 
 }  // namespace kmr::cli

@@ -16,6 +16,7 @@ struct Command {
 
 const Command kCommands[] = {
     {"audit", "check the thesis's claims on built-in defaults and report figures", kmr::cli::audit_command},
+    {"wellspaced", "dynamic well-spaced point sets (thesis Ch. 3): StableWS, updates, checks", kmr::cli::wellspaced_command},
 };
 
 int usage(std::ostream& out) {

@@ -95,6 +95,10 @@ class WellSpacedSet {
   // Squares (leaves) of the tree, same format.
   std::vector<std::string> tree_leaves() const;
 
+  // QTClippedVoronoi(v, β) on the current output (every vertex visible): the β-clipped Voronoi
+  // neighbours of output vertex v, sorted; *squares_read (if given) is the number of squares read.
+  std::vector<Point<D>> clipped_voronoi_neighbors(const Point<D>& v, std::size_t* squares_read = nullptr) const;
+
   const Params& params() const;
   int kappa() const;
   const Stats& stats() const;  // of the construction (and counters accumulated since)
