@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <boost/multiprecision/gmp.hpp>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -26,6 +27,27 @@ struct Halfspace {  // a·x ≤ b
   QPoint<D> a;
   Q b;
 };
+
+template <std::size_t D>
+std::array<double, D> to_d(const QPoint<D>& x) {
+  std::array<double, D> d;
+  for (std::size_t i = 0; i < D; ++i) d[i] = x[i].template convert_to<double>();
+  return d;
+}
+
+// Floating-point filter: sign of a·x − b from double approximations of a, x, b (each within a
+// relative 2^-53 of the exact value); 0 means "too close to call, decide exactly".
+template <std::size_t D>
+int filtered_sign(const std::array<double, D>& a, const std::array<double, D>& x, double b) {
+  double s = -b, mag = std::abs(b);
+  for (std::size_t i = 0; i < D; ++i) {
+    double t = a[i] * x[i];
+    s += t;
+    mag += std::abs(t);
+  }
+  double bound = 1e-12 * mag + 1e-300;
+  return s > bound ? 1 : (s < -bound ? -1 : 0);
+}
 
 template <std::size_t D>
 Q dot(const QPoint<D>& a, const QPoint<D>& b) {
@@ -58,8 +80,10 @@ struct Polytope {
   struct Vert {
     QPoint<D> x;
     std::vector<int> tight;  // sorted constraint indices
+    std::array<double, D> xd{};  // double approximation of x (filter)
   };
   std::vector<Halfspace<D>> h;
+  std::vector<std::pair<std::array<double, D>, double>> hd;  // double approximations of h
   std::vector<Vert> v;
   unsigned version = 0;  // bumped whenever the vertex set changes
 
@@ -75,6 +99,8 @@ struct Polytope {
       dn.b = -lo[i];
       P.h.push_back(up);
       P.h.push_back(dn);
+      P.hd.push_back({to_d<D>(up.a), up.b.template convert_to<double>()});
+      P.hd.push_back({to_d<D>(dn.a), dn.b.template convert_to<double>()});
     }
     for (unsigned m = 0; m < (1u << D); ++m) {
       Vert c;
@@ -84,25 +110,39 @@ struct Polytope {
         c.tight.push_back(static_cast<int>(2 * i + (hiside ? 0 : 1)));
       }
       std::sort(c.tight.begin(), c.tight.end());
+      c.xd = to_d<D>(c.x);
       P.v.push_back(std::move(c));
     }
     return P;
   }
 
   Q slack(const Halfspace<D>& hs, const QPoint<D>& x) const { return dot<D>(hs.a, x) - hs.b; }
+  // Exact sign of constraint k at vertex x (filtered).
+  int sign_at(std::size_t k, const Vert& x) const {
+    int f = filtered_sign<D>(hd[k].first, x.xd, hd[k].second);
+    return f ? f : slack(h[k], x.x).sign();
+  }
 
   // Adds constraint hs (index = h.size() before the call) and clips. Returns its index.
   int clip(const Halfspace<D>& hs) {
     int j = static_cast<int>(h.size());
     h.push_back(hs);
+    hd.push_back({to_d<D>(hs.a), hs.b.template convert_to<double>()});
     std::vector<Q> s(v.size());
+    std::vector<char> have(v.size(), 0);
     std::vector<int> sg(v.size());
     bool any_out = false;
     for (std::size_t k = 0; k < v.size(); ++k) {
-      s[k] = slack(hs, v[k].x);
-      sg[k] = s[k].sign();
+      sg[k] = sign_at(static_cast<std::size_t>(j), v[k]);
       any_out |= sg[k] > 0;
     }
+    auto exact_s = [&](std::size_t k) -> const Q& {
+      if (!have[k]) {
+        s[k] = slack(hs, v[k].x);
+        have[k] = 1;
+      }
+      return s[k];
+    };
     if (!any_out) {
       for (std::size_t k = 0; k < v.size(); ++k)
         if (sg[k] == 0) v[k].tight.push_back(j);
@@ -125,8 +165,9 @@ struct Polytope {
         }
         if (!adjacent) continue;
         Vert nv;
-        Q lam = s[p] / (s[p] - s[q]);
+        Q lam = exact_s(p) / (exact_s(p) - exact_s(q));
         for (std::size_t i = 0; i < D; ++i) nv.x[i] = v[p].x[i] + (v[q].x[i] - v[p].x[i]) * lam;
+        nv.xd = to_d<D>(nv.x);
         nv.tight = std::move(common);
         nv.tight.push_back(j);
         out.push_back(std::move(nv));
@@ -142,9 +183,34 @@ struct Polytope {
   }
 
   bool contains(const QPoint<D>& x) const {
-    for (const auto& hs : h)
-      if (slack(hs, x) > 0) return false;
+    auto xd = to_d<D>(x);
+    for (std::size_t k = 0; k < h.size(); ++k) {
+      int f = filtered_sign<D>(hd[k].first, xd, hd[k].second);
+      if (f > 0 || (f == 0 && slack(h[k], x) > 0)) return false;
+    }
     return true;
+  }
+  // Approximate max squared distance from c over the vertices (for pruning only).
+  double max_dist2_approx(const std::array<double, D>& c) const {
+    double m = 0;
+    for (const auto& x : v) {
+      double d = 0;
+      for (std::size_t i = 0; i < D; ++i) d += (x.xd[i] - c[i]) * (x.xd[i] - c[i]);
+      m = std::max(m, d);
+    }
+    return m;
+  }
+  // Exact: is some vertex farther than sqrt(r2) from c? (filtered)
+  bool some_vertex_beyond(const QPoint<D>& c, const Q& r2) const {
+    auto cd = to_d<D>(c);
+    double rd = r2.template convert_to<double>();
+    for (const auto& x : v) {
+      double d = 0;
+      for (std::size_t i = 0; i < D; ++i) d += (x.xd[i] - cd[i]) * (x.xd[i] - cd[i]);
+      if (d > rd * (1 + 1e-9)) return true;
+      if (d >= rd * (1 - 1e-9) && dist2<D>(x.x, c) > r2) return true;
+    }
+    return false;
   }
 
   // Max squared distance from c over the vertices.
@@ -191,10 +257,15 @@ struct Polytope {
   bool face_within(int j, const QPoint<D>& c, const Q& r2, int skip_from) const {
     std::vector<int> rel;  // constraints tight at some vertex of F_j
     bool nonempty = false;
+    auto cd = to_d<D>(c);
+    double rd = r2.template convert_to<double>();
     for (const auto& x : v) {
       if (!std::binary_search(x.tight.begin(), x.tight.end(), j)) continue;
       nonempty = true;
-      if (dist2<D>(x.x, c) <= r2) return true;
+      double dd = 0;
+      for (std::size_t i = 0; i < D; ++i) dd += (x.xd[i] - cd[i]) * (x.xd[i] - cd[i]);
+      if (dd < rd * (1 - 1e-9)) return true;
+      if (dd <= rd * (1 + 1e-9) && dist2<D>(x.x, c) <= r2) return true;
       for (int t : x.tight)
         if (t != j && t >= skip_from) rel.push_back(t);
     }

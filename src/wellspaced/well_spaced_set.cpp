@@ -257,32 +257,37 @@ struct WellSpacedSet<D>::Impl {
     K start = vtx.at(v).leaf;
     heap.push({0.0, start});
     seen.insert(start);
-    std::vector<std::pair<Q, Pt>> cand;  // exact squared distance, vertex
+    std::vector<std::pair<double, Pt>> cand;  // approximate squared distance, vertex
     double best = std::numeric_limits<double>::infinity();
     bool nn_fixed = false;
     double limit = std::numeric_limits<double>::infinity();
     const double slack = 1 + 1e-9;
     std::optional<Polytope<D>> P;
     std::vector<int> cidx;  // constraint index of cand[i] in P (−1: bisector misses P)
-    Q maxd;
+    double maxd = 0;
+    const auto vd0 = to_d<D>(vq);
     unsigned cache_version = ~0u;
     std::vector<std::pair<Pt, double>> vd;  // vertices of C in doubles, |cv|²
     auto clip_from = [&](std::size_t i0) {
       for (std::size_t i = i0; i < cand.size(); ++i) {
-        if (cand[i].first > 4 * maxd) {
+        // the bisector misses C if |vu|/2 > max_{c∈C}|vc| (pruning only: clipping is always safe)
+        if (cand[i].first > 4 * maxd * (1 + 1e-6)) {
           cidx.push_back(-1);
           continue;
         }
         unsigned ver = P->version;
         cidx.push_back(P->clip(bisector<D>(vq, vtx.at(cand[i].second).q)));
-        if (P->version != ver) maxd = P->max_dist2(vq);
+        if (P->version != ver) maxd = P->max_dist2_approx(vd0);
       }
-      limit = 4 * maxd.template convert_to<double>() * slack;
+      limit = 4 * maxd * slack;
     };
     auto fix_nn = [&]() {
-      res.nn2 = -1;
+      res.nn2 = -1;  // exact minimum among the candidates near the approximate minimum
       for (auto& [d, u] : cand)
-        if (res.nn2 < 0 || d < res.nn2) res.nn2 = d;
+        if (d <= best * (1 + 1e-9)) {
+          Q e = dist2<D>(vtx.at(u).q, vq);
+          if (res.nn2 < 0 || e < res.nn2) res.nn2 = e;
+        }
       nn_fixed = true;
       // box half-width R ≥ β·NN: β·NN rounded up to 8 significant bits (exactly checked)
       Q r2 = beta2 * res.nn2;
@@ -297,7 +302,7 @@ struct WellSpacedSet<D>::Impl {
         hi[i] = vq[i] + R;
       }
       P = Polytope<D>::box(lo, hi);
-      maxd = P->max_dist2(vq);
+      maxd = P->max_dist2_approx(vd0);
       std::sort(cand.begin(), cand.end());
       clip_from(0);
     };
@@ -354,9 +359,9 @@ struct WellSpacedSet<D>::Impl {
           if (!(u == v) && vtx.at(u).created < t) here.push_back(u);
         std::sort(here.begin(), here.end());
         for (const Pt& u : here) {
-          cand.emplace_back(dist2<D>(vtx.at(u).q, vq), u);
           double d = 0;
           for (std::size_t i = 0; i < D; ++i) d += (u[i] - v[i]) * (u[i] - v[i]);
+          cand.emplace_back(d, u);
           best = std::min(best, d);
         }
       }
@@ -369,9 +374,11 @@ struct WellSpacedSet<D>::Impl {
     std::sort(res.reads.begin(), res.reads.end());
     // exact decision: u ∈ CV iff the face of C on the bisector of v, u has a point within β·NN
     Q r2 = beta2 * res.nn2;
+    const double r2d = r2.template convert_to<double>();
     for (std::size_t i = 0; i < cand.size(); ++i) {
-      if (cidx[i] < 0 || cand[i].first > 4 * r2) continue;
-      if (P->face_within(cidx[i], vq, r2, 2 * static_cast<int>(D))) res.cv.emplace_back(cand[i].second, cand[i].first);
+      if (cidx[i] < 0 || cand[i].first > 4 * r2d * (1 + 1e-6)) continue;  // pruning only
+      if (P->face_within(cidx[i], vq, r2, 2 * static_cast<int>(D)))
+        res.cv.emplace_back(cand[i].second, dist2<D>(vtx.at(cand[i].second).q, vq));
     }
     std::sort(res.cv.begin(), res.cv.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     if (upd) {
@@ -440,7 +447,7 @@ struct WellSpacedSet<D>::Impl {
     for (auto& [u, d2] : cv.cv) P.clip(bisector<D>(vq, vtx.at(u).q));
     Q lim = rho2 * cv.nn2;
     std::uint64_t count = 0;
-    while (P.max_dist2(vq) > lim) {  // v is not ρ-well-spaced
+    while (P.some_vertex_beyond(vq, lim)) {  // v is not ρ-well-spaced
       Pt w = pick(vq, k.v, cv.nn2, P);
       KMR_CHECK(!vtx.count(w), "Steiner vertex coincides with a vertex");
       Vtx W;
