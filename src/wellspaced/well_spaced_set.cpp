@@ -258,6 +258,7 @@ struct WellSpacedSet<D>::Impl {
     heap.push({0.0, start});
     seen.insert(start);
     std::vector<std::pair<double, Pt>> cand;  // approximate squared distance, vertex
+    std::vector<K> late;                      // squares popped after NN was fixed
     double best = std::numeric_limits<double>::infinity();
     bool nn_fixed = false;
     double limit = std::numeric_limits<double>::infinity();
@@ -350,7 +351,8 @@ struct WellSpacedSet<D>::Impl {
       if (nn_fixed && key > limit) break;
       heap.pop();
       if (nn_fixed && !(s == start) && !meets_certificate_region(s)) continue;
-      res.reads.push_back(s);
+      if (nn_fixed) late.push_back(s);
+      else res.reads.push_back(s);
       std::size_t before = cand.size();
       auto it = leaves.find(s);
       if (it != leaves.end()) {
@@ -371,6 +373,11 @@ struct WellSpacedSet<D>::Impl {
     }
     KMR_CHECK(!cand.empty(), "clipped Voronoi scan found no vertex");
     if (!nn_fixed) fix_nn();
+    // The squares read are those of the NN phase and those meeting the certificate region of the
+    // FINAL cell: a function of the data, not of the order in which squares were popped (squares
+    // popped earlier against a larger region hold only vertices that cannot affect the result).
+    for (const K& s : late)
+      if (meets_certificate_region(s)) res.reads.push_back(s);
     std::sort(res.reads.begin(), res.reads.end());
     // exact decision: u ∈ CV iff the face of C on the bisector of v, u has a point within β·NN
     Q r2 = beta2 * res.nn2;
