@@ -37,6 +37,7 @@ std::vector<Check> all_checks();
 // Per-chapter check lists (one file each under src/audit/).
 std::vector<Check> roots_checks();
 std::vector<Check> kinetic_checks();
+std::vector<Check> wellspaced_checks();
 
 // Runs the checks, prints a table to `out` (and JSON to `json` when not null). Returns 0 iff all pass.
 int run_audit(const Options& options, std::ostream& out, std::ostream* json);
