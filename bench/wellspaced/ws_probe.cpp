@@ -7,6 +7,7 @@
 #include <random>
 
 #include "wellspaced/generators.hpp"
+#include "wellspaced/measure.hpp"
 #include "wellspaced/well_spaced_set.hpp"
 
 using namespace kmr::wellspaced;
@@ -23,17 +24,11 @@ int run(gen::Kind k, std::size_t n, int updates) {
               gen::name(k), D, in.size(), build, ws.vertices().size(), (unsigned long long)s.steiner,
               (unsigned long long)s.ops, (unsigned long long)s.squares, double(s.cv_squares_total) / s.cv_calls,
               (unsigned long long)s.cv_squares_max, s.min_rank, s.max_rank);
-  double tu = 0;
-  std::uint64_t touched = 0;
-  for (int i = 0; i < updates; ++i) {
-    auto a = ws.insert(pts[n + i]);
-    auto b = ws.erase(pts[n + i]);
-    tu += a.seconds + b.seconds;
-    touched += a.touched() + b.touched();
+  if (updates) {
+    auto u = sample_updates<D>(ws, std::vector<Point<D>>(pts.begin() + n, pts.end()));
+    std::printf("updates=%llu mean_update=%.6fs mean_touched=%.1f speed_ratio=%.1f\n", (unsigned long long)u.updates,
+                u.mean_seconds, u.mean_touched, build / u.mean_seconds);
   }
-  if (updates)
-    std::printf("updates=%d mean_update=%.6fs mean_touched=%.1f speed_ratio=%.1f\n", 2 * updates, tu / (2 * updates),
-                double(touched) / (2 * updates), build / (tu / (2 * updates)));
   return 0;
 }
 

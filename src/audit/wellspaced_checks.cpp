@@ -9,6 +9,7 @@
 
 #include "audit/audit.hpp"
 #include "wellspaced/generators.hpp"
+#include "wellspaced/measure.hpp"
 #include "wellspaced/well_spaced_set.hpp"
 
 namespace kmr::audit {
@@ -157,20 +158,13 @@ Verdict speed(const Options& o) {
   auto t0 = std::chrono::steady_clock::now();
   WellSpacedSet<2> ws(in);
   double build = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  double upd = 0;
-  std::uint64_t touched = 0;
-  for (int i = 0; i < pairs; ++i) {
-    auto a = ws.insert(pts[n + i]);
-    auto b = ws.erase(pts[n + i]);
-    upd += a.seconds + b.seconds;
-    touched += a.touched() + b.touched();
-  }
-  upd /= 2 * pairs;
+  auto u = sample_updates<2>(ws, std::vector<Point<2>>(pts.begin() + n, pts.end()));
+  double upd = u.mean_seconds;
   v.figure("n", std::to_string(n));
   v.figure("from-scratch seconds", fmt(build));
   v.figure("mean update seconds", fmt(upd));
   v.figure("speed ratio (scratch/update)", fmt(build / upd));
-  v.figure("mean operations touched per update", fmt(double(touched) / (2 * pairs)));
+  v.figure("mean operations touched per update", fmt(u.mean_touched));
   v.pass = build / upd > 1;
   v.summary = "2D uniform: one insertion/deletion with PropagateWS vs StableWS from scratch (target >= 1000x at n = 1e5)";
   return v;

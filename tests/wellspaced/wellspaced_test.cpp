@@ -92,7 +92,7 @@ TEST(WellspacedStatic, T3_3_4_OtherParameters) {
 
 TEST(WellspacedClippedVoronoi, L3_2_1_ScanEqualsBruteForce) {
   RecordProperty("claim", "L3.2.1");
-  for (auto k : gen::kAllKinds) clipped_case<2>(k, 25, 4, 12);
+  for (auto k : gen::kAllKinds) clipped_case<2>(k, 25, 4, 8);
   for (auto k : {gen::Kind::uniform, gen::Kind::grid, gen::Kind::sphere, gen::Kind::boundary}) clipped_case<3>(k, 10, 5, 6);
   clipped_case<4>(gen::Kind::uniform, 5, 6, 3);
 }
@@ -104,7 +104,7 @@ TEST(WellspacedDynamic, L3_4_2_UpdatesEqualFromScratch) {
     std::vector<Point<2>> cur(pts.begin(), pts.begin() + 12);
     WellSpacedSet<2> ws(cur);
     std::mt19937_64 rng(8);
-    for (int step = 0; step < 10; ++step) {
+    for (int step = 0; step < 6; ++step) {
       const auto& p = pts[rng() % pts.size()];
       bool present = std::find(cur.begin(), cur.end(), p) != cur.end();
       if (present && cur.size() <= 2) continue;
