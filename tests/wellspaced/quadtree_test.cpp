@@ -139,6 +139,36 @@ TEST(WellspacedQuadtree, ObsoleteSquaresAreNearTheUpdatedPoint) {
     }
   }
 }
+TEST(WellspacedQuadtree, L3_1_4_DeletedSquaresAreNearTheDeletedPoint) {
+  RecordProperty("claim", "L3.1.4");
+  // Lemma 3.1.4 (O(|s|), constant not given): a removed leaf s is a child of a node (size 2|s|) that
+  // was split only because of v̂, hence within the neighbour's-neighbour bound 2√D·(2|s|) of v̂.
+  auto pts = gen::points<3>(gen::Kind::close_pair, 30, 6);
+  std::vector<Point<3>> cur(pts.begin(), pts.end());
+  Quadtree<3> T;
+  T.build(cur);
+  std::size_t removed = 0;
+  while (cur.size() > 2) {
+    Point<3> p = cur.back();
+    auto leaf_input = [&](const Key<3>& l) -> const Point<3>* {
+      for (auto& q : cur)
+        if (cell_contains<3>(l, q)) return &q;
+      return nullptr;
+    };
+    auto ch = T.update(p, -1, leaf_input);
+    cur.pop_back();
+    for (auto& s : ch.obsolete) {
+      double h = s.side(), d2 = 0;
+      for (int j = 0; j < 3; ++j) {
+        double lo = s.k[j] * h, hi = lo + h, x = p[j] < lo ? lo - p[j] : (p[j] > hi ? p[j] - hi : 0);
+        d2 += x * x;
+      }
+      EXPECT_LE(std::sqrt(d2), 4 * std::sqrt(3.0) * h + 1e-12);
+      ++removed;
+    }
+  }
+  EXPECT_GT(removed, 0u);
+}
 TEST(WellspacedQuadtree, RefusesPointsBeyondDepthLimit) {
   Quadtree<2> T;
   std::vector<Point<2>> pts{{0.5, 0.5}, {0.5 + std::ldexp(1.0, -60), 0.5}};
