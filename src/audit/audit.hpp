@@ -38,6 +38,7 @@ std::vector<Check> all_checks();
 std::vector<Check> roots_checks();
 std::vector<Check> kinetic_checks();
 std::vector<Check> sac_checks();
+std::vector<Check> wellspaced_checks();
 
 // Runs the checks, prints a table to `out` (and JSON to `json` when not null). Returns 0 iff all pass.
 int run_audit(const Options& options, std::ostream& out, std::ostream* json);

@@ -12,5 +12,6 @@ int audit_command(const Argv& args);
 int roots_command(const Argv& args);
 int simulate_command(const Argv& args);
 int bench_command(const Argv& args);
+int wellspaced_command(const Argv& args);
 
 }  // namespace kmr::cli

@@ -18,6 +18,7 @@ const Command kCommands[] = {
     {"audit", "check the thesis's claims on built-in defaults and report figures", kmr::cli::audit_command},
     {"roots", "isolate the real roots of a polynomial to lattice intervals", kmr::cli::roots_command},
     {"simulate", "run a kinetic simulation on the lattice (kinetic sorting)", kmr::cli::simulate_command},
+    {"wellspaced", "dynamic well-spaced point sets (thesis Ch. 3): StableWS, updates, checks", kmr::cli::wellspaced_command},
     {"bench", "measure performance (bench sac: self-adjusting programs vs static twins)", kmr::cli::bench_command},
 };
 

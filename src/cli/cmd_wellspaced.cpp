@@ -1,0 +1,194 @@
+// kmr wellspaced: StableWS on an input file, dynamic updates with PropagateWS, optional
+// from-scratch checking after each update (Lemma 3.4.2) and JSON statistics (thesis Chapter 3).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <set>
+#include <sstream>
+
+#include "cli/args.hpp"
+#include "cli/commands.hpp"
+#include "exact/error.hpp"
+#include "wellspaced/well_spaced_set.hpp"
+
+namespace kmr::cli {
+namespace {
+
+using namespace kmr::wellspaced;
+
+double parse_number(const std::string& tok, const std::string& where) {
+  const char* b = tok.c_str();
+  char* e = nullptr;
+  double x = std::strtod(b, &e);
+  if (e == b || *e != '\0') throw InputError(where + ": '" + tok + "' is not a number");
+  if (!std::isfinite(x)) throw InputError(where + ": '" + tok + "' is not finite");
+  return x;
+}
+
+template <std::size_t D>
+Point<D> parse_point(const std::vector<std::string>& toks, std::size_t from, const std::string& where) {
+  if (toks.size() - from != D)
+    throw InputError(where + ": expected " + std::to_string(D) + " coordinates, got " + std::to_string(toks.size() - from));
+  Point<D> p;
+  for (std::size_t i = 0; i < D; ++i) {
+    p[i] = parse_number(toks[from + i], where);
+    if (p[i] < 0 || p[i] > 1) throw InputError(where + ": coordinate '" + toks[from + i] + "' is outside [0,1]");
+  }
+  return p;
+}
+
+std::vector<std::pair<std::size_t, std::vector<std::string>>> read_lines(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError("cannot read file '" + path + "'");
+  std::vector<std::pair<std::size_t, std::vector<std::string>>> out;
+  std::string line;
+  std::size_t n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    auto h = line.find('#');
+    if (h != std::string::npos) line.resize(h);
+    std::istringstream ss(line);
+    std::vector<std::string> toks;
+    std::string t;
+    while (ss >> t) toks.push_back(t);
+    if (!toks.empty()) out.emplace_back(n, std::move(toks));
+  }
+  return out;
+}
+
+std::string json_num(double x) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+
+template <std::size_t D>
+int run(const Args& args, const std::string& input_path, Params params) {
+  std::vector<Point<D>> input;
+  std::set<Point<D>> seen;
+  for (auto& [n, toks] : read_lines(input_path)) {
+    std::string where = input_path + ":" + std::to_string(n);
+    Point<D> p = parse_point<D>(toks, 0, where);
+    if (!seen.insert(p).second) throw InputError(where + ": duplicate point");
+    input.push_back(p);
+  }
+  struct Update {
+    bool insert;
+    Point<D> p;
+    std::string where;
+  };
+  std::vector<Update> updates;
+  if (auto up = args.value("updates")) {
+    std::set<Point<D>> current = seen;  // validate the whole file before applying anything
+    for (auto& [n, toks] : read_lines(*up)) {
+      std::string where = *up + ":" + std::to_string(n);
+      if (toks[0] != "+" && toks[0] != "-") throw InputError(where + ": a line must start with '+' or '-'");
+      Update u{toks[0] == "+", parse_point<D>(toks, 1, where), where};
+      if (u.insert && !current.insert(u.p).second) throw InputError(where + ": inserting a point that is already in the input");
+      if (!u.insert && !current.erase(u.p)) throw InputError(where + ": deleting a point that is not in the input");
+      if (current.size() < 2) throw InputError(where + ": fewer than 2 input points would remain");
+      updates.push_back(u);
+    }
+  }
+  if (input.size() < 2) throw InputError(input_path + ": at least 2 input points are needed");
+  WellSpacedSet<D> ws(input, params);
+  Stats cstats = ws.stats();
+  bool check = args.has("check");
+  std::vector<std::pair<UpdateStats, double>> ustats;
+  for (const Update& u : updates) {
+    UpdateStats s;
+    try {
+      s = u.insert ? ws.insert(u.p) : ws.erase(u.p);
+    } catch (const InputError& e) {
+      throw InputError(u.where + ": " + e.what());
+    }
+    double scratch_seconds = 0;
+    if (check) {
+      auto t0 = std::chrono::steady_clock::now();
+      WellSpacedSet<D> fresh(ws.input(), params);
+      scratch_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      auto a = ws.vertices(), b = fresh.vertices();
+      bool same = a.size() == b.size();
+      for (std::size_t i = 0; same && i < a.size(); ++i) same = a[i].x == b[i].x && a[i].is_steiner == b[i].is_steiner;
+      if (!same) {
+        std::cerr << "kmr wellspaced: check failed after " << u.where << ": output differs from a from-scratch run ("
+                  << a.size() << " vs " << b.size() << " vertices)\n";
+        return 1;
+      }
+      if (ws.canonical_graph() != fresh.canonical_graph()) {
+        std::cerr << "kmr wellspaced: check failed after " << u.where
+                  << ": computation graph is not isomorphic to the from-scratch one\n";
+        return 1;
+      }
+    }
+    ustats.emplace_back(s, scratch_seconds);
+  }
+  for (const auto& v : ws.vertices()) {
+    for (std::size_t i = 0; i < D; ++i) std::printf("%.17g ", v.x[i]);
+    std::printf("%d\n", v.is_steiner ? 1 : 0);
+  }
+  if (auto sp = args.value("stats")) {
+    std::ofstream js(*sp);
+    if (!js) throw InputError("cannot write --stats file '" + *sp + "'");
+    js << "{\n  \"dim\": " << D << ", \"rho\": " << json_num(params.rho) << ", \"beta\": " << json_num(params.beta)
+       << ", \"kappa\": " << ws.kappa() << ",\n  \"construction\": {\"input\": " << input.size()
+       << ", \"dispatches\": " << cstats.dispatches << ", \"fills\": " << cstats.fills << ", \"operations\": " << cstats.ops
+       << ", \"steiner\": " << cstats.steiner << ", \"squares\": " << cstats.squares
+       << ", \"cv_calls\": " << cstats.cv_calls << ", \"cv_squares_max\": " << cstats.cv_squares_max
+       << ", \"cv_squares_mean\": " << json_num(cstats.cv_calls ? double(cstats.cv_squares_total) / cstats.cv_calls : 0)
+       << ", \"cv_neighbors_max\": " << cstats.cv_neighbors_max << ", \"steiner_per_fill_max\": " << cstats.steiner_per_fill_max
+       << ", \"seconds\": " << json_num(cstats.seconds) << "},\n  \"updates\": [";
+    for (std::size_t i = 0; i < ustats.size(); ++i) {
+      const auto& [s, sc] = ustats[i];
+      js << (i ? ",\n    " : "\n    ") << "{\"op\": \"" << (updates[i].insert ? "+" : "-") << "\", \"obsolete\": " << s.obsolete
+         << ", \"fresh\": " << s.fresh << ", \"inconsistent\": " << s.inconsistent << ", \"steiner_inserted\": " << s.steiner_inserted
+         << ", \"steiner_deleted\": " << s.steiner_deleted << ", \"obsolete_squares\": " << s.obsolete_squares
+         << ", \"fresh_squares\": " << s.fresh_squares << ", \"seconds\": " << json_num(s.seconds);
+      if (check) js << ", \"from_scratch_seconds\": " << json_num(sc);
+      js << "}";
+    }
+    js << "\n  ]\n}\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+int wellspaced_command(const Argv& argv) {
+  Args args(argv, {"dim", "rho", "beta", "updates", "stats"}, {"check"});
+  if (args.help()) {
+    std::cout << "usage: kmr wellspaced --dim D [--rho R] [--beta B] [--updates FILE] [--check] [--stats FILE] INPUT\n"
+                 "Builds a rho-well-spaced, size-optimal superset of the points in INPUT (thesis Ch. 3, StableWS),\n"
+                 "then applies dynamic updates (PropagateWS). D is 2, 3 or 4.\n"
+                 "  INPUT       one point per line: D decimal coordinates in [0,1]; '#' starts a comment\n"
+                 "  --rho R     well-spacedness ratio (default 1.5; every Voronoi cell within rho*NN)\n"
+                 "  --beta B    clipping ratio, B > R (default 3)\n"
+                 "  --updates   lines '+ x1 .. xD' (insert) or '- x1 .. xD' (delete), applied in order\n"
+                 "  --check     after every update compare with a from-scratch run (output and computation\n"
+                 "              graph); exit status 1 on a difference\n"
+                 "  --stats     write construction and per-update counts as JSON\n"
+                 "stdout: the output vertices, 'x1 .. xD flag' with %.17g coordinates, flag 1 = Steiner.\n"
+                 "Bad input: a message naming the line, exit status 2, nothing applied.\n";
+    return 0;
+  }
+  if (args.positional().size() != 1) throw InputError("kmr wellspaced needs exactly one INPUT file (see --help)");
+  long long dim = args.integer("dim", 0, 2, 4);
+  if (!args.value("dim")) throw InputError("--dim D is required (2, 3 or 4)");
+  Params params;
+  if (auto r = args.value("rho")) params.rho = parse_number(*r, "--rho");
+  if (auto b = args.value("beta")) params.beta = parse_number(*b, "--beta");
+  else if (args.value("rho")) params.beta = std::max(params.beta, 2 * params.rho);
+  if (!(params.rho > 1)) throw InputError("--rho must be > 1");
+  if (!(params.beta > params.rho)) throw InputError("--beta must be > --rho");
+  const std::string& input = args.positional()[0];
+  switch (dim) {
+    case 2: return run<2>(args, input, params);
+    case 3: return run<3>(args, input, params);
+    default: return run<4>(args, input, params);
+  }
+}
+
+}  // namespace kmr::cli

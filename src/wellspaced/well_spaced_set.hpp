@@ -1,0 +1,127 @@
+#pragma once
+// Dynamic well-spaced point sets in [0,1]^D (thesis Chapter 3): StableWS (Fig. 3.4) and its
+// change propagation PropagateWS / Insert / Delete (Fig. 3.8). Public API for the CLI, the tests,
+// the audit and the CGAL oracle.
+//
+// Guarantees (each is checked by a test in tests/wellspaced or proptests/wellspaced):
+//  * Every decision is exact: input doubles convert exactly to rationals; Steiner vertices are
+//    doubles (dyadic, ≤ 53 significant bits), so vertices() reports them without rounding.
+//  * Output: a ρ-well-spaced superset of the input (Vor(v) ∩ [0,1]^D inside the closed ball of
+//    radius ρ·NN(v) for every vertex v) that is size-conforming with c = 2ρ/(ρ−1) (Thm 3.3.4,
+//    Lemma 3.3.3).
+//  * Determinism: vertices(), canonical_graph() and the quadtree depend only on the current input
+//    SET and the parameters — not on input order, update history, pointers or hashes.
+//  * Lemma 3.4.2: after insert/erase, vertices() equals and canonical_graph() is identical to
+//    (i.e. the computation graphs are isomorphic under the labelling by vertex coordinates and
+//    time, squares by corners) those of a from-scratch WellSpacedSet on the current input.
+//  * Bad input (non-finite or out-of-domain coordinates, duplicates, erasing an absent point,
+//    inserting a present one, points closer than the tree's depth limit, fewer than 2 input points)
+//    throws kmr::InputError and leaves the object unchanged.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace kmr::wellspaced {
+
+template <std::size_t D>
+using Point = std::array<double, D>;
+
+// Parameters ρ, β (exact dyadics: every double is one). κ and ℓ(r) are derived so that
+// Lemma 3.3.12 holds: ℓ(r) = the largest power of two < ρ^r/√D, κ = ⌊1 + 6βρ√D⌋ + 1
+// (so κ > 1 + 3βρ^{r+1}/ℓ(r) for every r). Documented in spec/wellspaced.md.
+struct Params {
+  double rho = 1.5;   // well-spacedness ratio ρ > 1
+  double beta = 3.0;  // clipping ratio β > ρ
+};
+
+template <std::size_t D>
+struct Vertex {
+  Point<D> x;
+  bool is_steiner = false;
+};
+
+// Counts of one run (construction or the whole lifetime).
+struct Stats {
+  std::uint64_t dispatches = 0, fills = 0;         // executed operations
+  std::uint64_t cv_calls = 0;                       // QTClippedVoronoi calls
+  std::uint64_t cv_squares_total = 0, cv_squares_max = 0;  // squares read per call
+  std::uint64_t cv_neighbors_max = 0;               // |CV| max
+  std::uint64_t steiner_per_fill_max = 0;           // Lemma 3.3.9
+  std::uint64_t steiner = 0;                        // Steiner vertices in the output
+  std::uint64_t ops = 0;                            // operations in the computation graph
+  std::uint64_t squares = 0;                        // quadtree leaves
+  int min_rank = 0, max_rank = 0;
+  double seconds = 0;
+};
+
+// One dynamic update (Fig. 3.8).
+struct UpdateStats {
+  std::uint64_t obsolete = 0;      // operations removed (Ω⊖)
+  std::uint64_t fresh = 0;         // operations executed for the first time (Ω⊕)
+  std::uint64_t inconsistent = 0;  // operations re-executed (Ω⊗)
+  std::uint64_t steiner_inserted = 0, steiner_deleted = 0;
+  std::uint64_t obsolete_squares = 0, fresh_squares = 0;
+  std::uint64_t cv_squares_total = 0, cv_calls = 0;
+  double seconds = 0;
+  std::uint64_t touched() const { return obsolete + fresh + inconsistent; }
+};
+
+template <std::size_t D>
+class WellSpacedSet {
+ public:
+  // StableWS(N). Throws InputError (naming the offending point's index) on bad input.
+  explicit WellSpacedSet(const std::vector<Point<D>>& input, Params params = {});
+  ~WellSpacedSet();
+  WellSpacedSet(WellSpacedSet&&) noexcept;
+  WellSpacedSet& operator=(WellSpacedSet&&) noexcept;
+
+  // Insert(Q, v̂) / Delete(Q, v̂) with PropagateWS. InputError (object unchanged) on bad input.
+  UpdateStats insert(const Point<D>& p);
+  UpdateStats erase(const Point<D>& p);
+
+  // Output vertices sorted lexicographically by coordinates.
+  std::vector<Vertex<D>> vertices() const;
+  // Current input, sorted lexicographically.
+  std::vector<Point<D>> input() const;
+  // Canonical form of the computation graph: sorted lines naming squares by level and integer
+  // corner, operations by vertex coordinates (%a) and time (rank, D/F, color), one line per node
+  // and per edge. Two graphs are isomorphic (Lemma 3.4.2) iff these vectors are equal.
+  std::vector<std::string> canonical_graph() const;
+  // Internal nodes of the balanced 2^D-tree as "level:k1,k2,...", sorted (tree identity).
+  std::vector<std::string> tree_internal_nodes() const;
+  // Squares (leaves) of the tree, same format.
+  std::vector<std::string> tree_leaves() const;
+
+  // QTClippedVoronoi(v, β) on the current output (every vertex visible): the β-clipped Voronoi
+  // neighbours of output vertex v, sorted; *squares_read (if given) is the number of squares read.
+  std::vector<Point<D>> clipped_voronoi_neighbors(const Point<D>& v, std::size_t* squares_read = nullptr) const;
+
+  const Params& params() const;
+  int kappa() const;
+  const Stats& stats() const;  // of the construction (and counters accumulated since)
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+// Exact brute-force checks (no quadtree, no scan): used by tests and the audit.
+// ρ-well-spacedness of M (Vor_M(v) ∩ [0,1]^D ⊆ closed ball(v, ρ·NN_M(v)) for all v).
+// On failure, *why names a violating vertex.
+template <std::size_t D>
+bool is_well_spaced(const std::vector<Point<D>>& M, double rho, std::string* why = nullptr);
+// Size-conformity NN_M(v) ≥ lfs_N(v)/c with c = 2ρ/(ρ−1) (Lemma 3.3.3), lfs w.r.t. input N.
+template <std::size_t D>
+bool is_size_conforming(const std::vector<Point<D>>& N, const std::vector<Point<D>>& M, double rho,
+                        std::string* why = nullptr);
+// β-clipped Voronoi neighbours of M[v] among all of M (indices, sorted): u is one iff some ball
+// with M[v], M[u] on its boundary, no vertex of M inside, has radius ≤ β·NN_M(M[v]).
+template <std::size_t D>
+std::vector<std::size_t> brute_clipped_voronoi_neighbors(const std::vector<Point<D>>& M, std::size_t v,
+                                                         double beta);
+
+}  // namespace kmr::wellspaced

@@ -1,0 +1,158 @@
+// StableWS (Fig. 3.4) and its updates (Fig. 3.8), judged by the library's exact brute force
+// (Voronoi cells of all vertices clipped to the domain, no quadtree, no scan) and by from-scratch runs.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "exact/error.hpp"
+#include "wellspaced/generators.hpp"
+#include "wellspaced/well_spaced_set.hpp"
+
+using namespace kmr::wellspaced;
+
+namespace {
+
+template <std::size_t D>
+std::vector<Point<D>> coords(const std::vector<Vertex<D>>& vs) {
+  std::vector<Point<D>> out;
+  for (auto& v : vs) out.push_back(v.x);
+  return out;
+}
+
+template <std::size_t D>
+void check_output(const std::vector<Point<D>>& input, const WellSpacedSet<D>& ws, const std::string& what) {
+  auto vs = ws.vertices();
+  auto M = coords<D>(vs);
+  std::string why;
+  EXPECT_TRUE(is_well_spaced<D>(M, ws.params().rho, &why)) << what << ": " << why;
+  EXPECT_TRUE(is_size_conforming<D>(input, M, ws.params().rho, &why)) << what << ": " << why;
+  // superset of the input, Steiner flags right
+  std::size_t inputs = 0;
+  for (auto& v : vs) {
+    bool is_input = std::binary_search(input.begin(), input.end(), v.x);
+    EXPECT_EQ(is_input, !v.is_steiner) << what;
+    inputs += is_input;
+  }
+  EXPECT_EQ(inputs, input.size()) << what;
+}
+
+template <std::size_t D>
+void static_case(gen::Kind k, std::size_t n, std::uint64_t seed) {
+  auto input = gen::points<D>(k, n, seed);
+  WellSpacedSet<D> ws(input);
+  check_output<D>(input, ws, std::string(gen::name(k)) + " D=" + std::to_string(D));
+  // determinism: the reversed input gives the same output and graph
+  std::vector<Point<D>> rev(input.rbegin(), input.rend());
+  WellSpacedSet<D> ws2(rev);
+  EXPECT_EQ(ws.canonical_graph(), ws2.canonical_graph());
+}
+
+template <std::size_t D>
+void clipped_case(gen::Kind k, std::size_t n, std::uint64_t seed, std::size_t samples) {
+  auto input = gen::points<D>(k, n, seed);
+  WellSpacedSet<D> ws(input);
+  auto M = coords<D>(ws.vertices());
+  std::mt19937_64 rng(seed);
+  for (std::size_t s = 0; s < samples; ++s) {
+    std::size_t v = rng() % M.size();
+    auto scan = ws.clipped_voronoi_neighbors(M[v]);
+    std::vector<Point<D>> brute;
+    for (auto u : brute_clipped_voronoi_neighbors<D>(M, v, ws.params().beta)) brute.push_back(M[u]);
+    std::sort(brute.begin(), brute.end());
+    EXPECT_EQ(scan, brute) << gen::name(k) << " D=" << D << " vertex " << v;
+  }
+}
+
+}  // namespace
+
+TEST(WellspacedStatic, T3_3_4_WellSpacedAndSizeConforming2D) {
+  RecordProperty("claim", "T3.3.4");
+  for (auto k : gen::kAllKinds) static_case<2>(k, 30, 1);
+}
+TEST(WellspacedStatic, T3_3_4_WellSpacedAndSizeConforming3D) {
+  RecordProperty("claim", "T3.3.4");
+  // clustered and close pairs make thousands of Steiner vertices in 3D (Ω(log Δ) rings): 2D only
+  for (auto k : {gen::Kind::uniform, gen::Kind::plane, gen::Kind::sphere, gen::Kind::grid, gen::Kind::boundary})
+    static_case<3>(k, 10, 2);
+  static_case<3>(gen::Kind::line, 4, 2);
+}
+TEST(WellspacedStatic, T3_3_4_WellSpacedAndSizeConforming4D) {
+  RecordProperty("claim", "T3.3.4");
+  for (auto k : {gen::Kind::uniform, gen::Kind::boundary, gen::Kind::grid}) static_case<4>(k, 5, 3);
+}
+TEST(WellspacedStatic, T3_3_4_OtherParameters) {
+  RecordProperty("claim", "T3.3.4");
+  auto input = gen::points<2>(gen::Kind::uniform, 25, 9);
+  for (Params p : {Params{1.25, 2.5}, Params{2.0, 4.0}, Params{1.5, 2.0}}) {
+    WellSpacedSet<2> ws(input, p);
+    check_output<2>(input, ws, "rho=" + std::to_string(p.rho));
+  }
+}
+
+TEST(WellspacedClippedVoronoi, L3_2_1_ScanEqualsBruteForce) {
+  RecordProperty("claim", "L3.2.1");
+  for (auto k : gen::kAllKinds) clipped_case<2>(k, 25, 4, 8);
+  for (auto k : {gen::Kind::uniform, gen::Kind::grid, gen::Kind::sphere, gen::Kind::boundary}) clipped_case<3>(k, 10, 5, 6);
+  clipped_case<4>(gen::Kind::uniform, 5, 6, 3);
+}
+
+TEST(WellspacedDynamic, L3_4_2_UpdatesEqualFromScratch) {
+  RecordProperty("claim", "L3.4.2");
+  for (auto k : gen::kAllKinds) {
+    auto pts = gen::points<2>(k, 24, 8);
+    std::vector<Point<2>> cur(pts.begin(), pts.begin() + 12);
+    WellSpacedSet<2> ws(cur);
+    std::mt19937_64 rng(8);
+    for (int step = 0; step < 6; ++step) {
+      const auto& p = pts[rng() % pts.size()];
+      bool present = std::find(cur.begin(), cur.end(), p) != cur.end();
+      if (present && cur.size() <= 2) continue;
+      if (present) {
+        ws.erase(p);
+        cur.erase(std::find(cur.begin(), cur.end(), p));
+      } else {
+        ws.insert(p);
+        cur.push_back(p);
+      }
+      WellSpacedSet<2> fresh(cur);
+      ASSERT_EQ(coords<2>(ws.vertices()), coords<2>(fresh.vertices())) << gen::name(k) << " step " << step;
+      ASSERT_EQ(ws.canonical_graph(), fresh.canonical_graph()) << gen::name(k) << " step " << step;
+      ASSERT_EQ(ws.tree_internal_nodes(), fresh.tree_internal_nodes());
+    }
+  }
+}
+
+TEST(WellspacedInput, BadInputIsRefusedAndNothingChanges) {
+  std::vector<Point<2>> in{{0.25, 0.25}, {0.75, 0.5}, {0.5, 0.875}};
+  EXPECT_THROW(WellSpacedSet<2>({{0.1, 0.2}}), kmr::InputError);
+  EXPECT_THROW(WellSpacedSet<2>({{0.1, 0.2}, {0.1, 0.2}}), kmr::InputError);
+  EXPECT_THROW(WellSpacedSet<2>({{0.1, 1.5}, {0.3, 0.2}}), kmr::InputError);
+  EXPECT_THROW(WellSpacedSet<2>({{0.1, NAN}, {0.3, 0.2}}), kmr::InputError);
+  EXPECT_THROW(WellSpacedSet<2>(in, Params{0.9, 2.0}), kmr::InputError);
+  EXPECT_THROW(WellSpacedSet<2>(in, Params{1.5, 1.5}), kmr::InputError);
+  WellSpacedSet<2> ws(in);
+  auto g = ws.canonical_graph();
+  EXPECT_THROW(ws.insert({0.25, 0.25}), kmr::InputError);
+  EXPECT_THROW(ws.erase({0.3, 0.3}), kmr::InputError);
+  EXPECT_THROW(ws.insert({-0.1, 0.3}), kmr::InputError);
+  EXPECT_THROW(ws.insert({0.25 + std::ldexp(1.0, -60), 0.25}), kmr::InputError);
+  auto steiner = std::find_if(ws.vertices().begin(), ws.vertices().end(), [](auto& v) { return v.is_steiner; });
+  if (steiner != ws.vertices().end()) EXPECT_THROW(ws.erase(steiner->x), kmr::InputError);
+  EXPECT_EQ(ws.canonical_graph(), g);
+  ws.erase({0.25, 0.25});
+  EXPECT_THROW(ws.erase({0.75, 0.5}), kmr::InputError);  // 2 must remain
+}
+
+TEST(WellspacedDynamic, InsertingAtASteinerVertex) {
+  RecordProperty("claim", "L3.4.2");
+  auto input = gen::points<2>(gen::Kind::uniform, 12, 21);
+  WellSpacedSet<2> ws(input);
+  Point<2> s{};
+  for (auto& v : ws.vertices())
+    if (v.is_steiner) s = v.x;
+  ws.insert(s);
+  input.push_back(s);
+  WellSpacedSet<2> fresh(input);
+  EXPECT_EQ(ws.canonical_graph(), fresh.canonical_graph());
+}
