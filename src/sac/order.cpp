@@ -8,6 +8,9 @@ namespace kmr::sac {
 
 namespace {
 constexpr std::uint64_t kTopEnd = std::uint64_t{1} << 62;  // group labels lie in [0, kTopEnd)
+constexpr std::uint64_t kAppendStep = std::uint64_t{1} << 57;        // kGroupMax steps fit in 64 bits
+constexpr std::uint64_t kGroupAppendStep = std::uint64_t{1} << 32;   // 2^30 appended groups fit
+static_assert((OrderList::kGroupMax + 1) * kAppendStep > kAppendStep);  // no overflow
 }
 
 OrderList::OrderList() {
@@ -80,7 +83,8 @@ OmGroup* OrderList::insert_group_after(OmGroup* g) {
     KMR_CHECK(hi - g->label >= 2, "OrderList: no free group label after relabelling");
   }
   auto* h = new OmGroup;
-  h->label = g->label + (hi - g->label) / 2;
+  std::uint64_t half = (hi - g->label) / 2;  // after the last group: a bounded step (appends)
+  h->label = g->label + (!g->next && half > kGroupAppendStep ? kGroupAppendStep : half);
   h->prev = g;
   h->next = g->next;
   if (g->next) g->next->prev = h;
@@ -115,22 +119,45 @@ void OrderList::split(OmGroup* g) {
 }
 
 void OrderList::insert_after(Stamp* x, Stamp* y) {
-  if (x->group->size >= kGroupMax) split(x->group);
-  OmGroup* g = x->group;
   Stamp* nx = x->next;
-  std::uint64_t hi = (nx && nx->group == g) ? nx->label : ~std::uint64_t{0};
+  bool at_group_end = !nx || nx->group != x->group;
+  if (x->group->size >= kGroupMax) {
+    if (at_group_end) {
+      // Appending after a full group's last stamp (the common case: a run appends at the end of
+      // the trace): start a new group instead of splitting, so no stamp is relabelled.
+      OmGroup* h = insert_group_after(x->group);
+      h->first = y;
+      h->size = 1;
+      y->label = kAppendStep;
+      y->group = h;
+      link_after(x, y);
+      return;
+    }
+    split(x->group);
+    at_group_end = !nx || nx->group != x->group;
+  }
+  OmGroup* g = x->group;
+  std::uint64_t hi = at_group_end ? ~std::uint64_t{0} : nx->label;
   if (hi - x->label < 2) {
     relabel_group(g);
-    hi = (nx && nx->group == g) ? nx->label : ~std::uint64_t{0};
+    hi = at_group_end ? ~std::uint64_t{0} : nx->label;
   }
-  y->label = x->label + (hi - x->label) / 2;
+  // After the group's last stamp, step by at most kAppendStep (kGroupMax such steps fit), so runs
+  // of appends never exhaust the labels; elsewhere, the midpoint.
+  std::uint64_t gap = (hi - x->label) / 2;
+  y->label = x->label + (at_group_end && gap > kAppendStep ? kAppendStep : gap);
   y->group = g;
+  link_after(x, y);
+  ++g->size;
+}
+
+void OrderList::link_after(Stamp* x, Stamp* y) {
+  Stamp* nx = x->next;
   y->prev = x;
   y->next = nx;
   if (nx) nx->prev = y;
   else last_ = y;
   x->next = y;
-  ++g->size;
   ++size_;
 }
 

@@ -62,6 +62,7 @@ class OrderList {
   void split(OmGroup* g);
   OmGroup* insert_group_after(OmGroup* g);
   void remove_group(OmGroup* g);
+  void link_after(Stamp* x, Stamp* y);  // list links only
 
   Stamp base_;
   Stamp* last_ = &base_;

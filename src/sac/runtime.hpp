@@ -241,6 +241,53 @@ struct Stats {
   std::uint64_t om_relabels = 0;
 };
 
+// ---- memory -----------------------------------------------------------------------------------
+// Size-classed free lists with 8-byte classes (nodes and modifiables need no more alignment: make_node
+// and make_mod check it), carved from chunks that grow from 64 KiB to 32 MiB; chunks of 2 MiB and
+// more are given transparent huge pages. Blocks of 1 KiB and more use operator new.
+class NodePool {
+ public:
+  static constexpr std::size_t kClasses = 128;
+  NodePool() = default;
+  NodePool(const NodePool&) = delete;
+  NodePool& operator=(const NodePool&) = delete;
+  ~NodePool();
+  static std::size_t rounded(std::size_t bytes) { return (bytes + 7) / 8 * 8; }
+  void* alloc(std::size_t bytes) {
+    std::size_t c = (bytes + 7) / 8;
+    if (c >= kClasses) return ::operator new(bytes);
+    if (void* p = free_[c]) {
+      free_[c] = *static_cast<void**>(p);
+      return p;
+    }
+    std::size_t b = c * 8;
+    if (left_ < b) return refill(bytes);
+    void* p = cur_;
+    cur_ += b;
+    left_ -= b;
+    return p;
+  }
+  void free(void* p, std::size_t bytes) {
+    std::size_t c = (bytes + 7) / 8;
+    if (c >= kClasses) {
+      ::operator delete(p);
+      return;
+    }
+    *static_cast<void**>(p) = free_[c];
+    free_[c] = p;
+  }
+
+ private:
+  static constexpr std::size_t kHuge = std::size_t{2} << 20;
+  static constexpr std::size_t kMaxChunk = std::size_t{32} << 20;
+  void* refill(std::size_t bytes);
+  void* free_[kClasses] = {};
+  char* cur_ = nullptr;
+  std::size_t left_ = 0;
+  std::size_t next_chunk_ = std::size_t{64} << 10;
+  std::vector<void*> chunks_;
+};
+
 // ---- the runtime ------------------------------------------------------------------------------
 class Runtime {
  public:
@@ -517,10 +564,17 @@ class Runtime {
     return finger_ && OrderList::before(now_, s) && OrderList::before(s, finger_);
   }
 
-  void* raw_alloc(std::size_t bytes);
-  void raw_free(void* p, std::size_t bytes);
+  void* raw_alloc(std::size_t bytes) {
+    bytes_ += NodePool::rounded(bytes);
+    return pool_.alloc(bytes);
+  }
+  void raw_free(void* p, std::size_t bytes) {
+    bytes_ -= NodePool::rounded(bytes);
+    pool_.free(p, bytes);
+  }
   template <class N, class... A>
   N* make_node(A&&... a) {
+    static_assert(alignof(N) <= 8, "sac: trace nodes (closures, keys, results) need at most 8-byte alignment");
     void* p = raw_alloc(sizeof(N));
     N* n = new (p) N(std::forward<A>(a)...);
     n->bytes = sizeof(N);
@@ -529,6 +583,7 @@ class Runtime {
   }
   template <class M>
   M* make_mod() {
+    static_assert(alignof(M) <= 8, "sac: modifiable values need at most 8-byte alignment");
     void* p = raw_alloc(sizeof(M));
     auto* m = new (p) M();
     m->bytes = sizeof(M);
@@ -597,8 +652,7 @@ class Runtime {
   std::uint64_t live_owned_ = 0;
   std::uint64_t bytes_ = 0;
   Stats stats_;
-  struct Pool;
-  Pool* pool_;
+  NodePool pool_;  // frees the chunks after ~Runtime's body has run the node destructors
 };
 
 // A traceable value (§1.3.3): the computation reads it like a modifiable; its owner (e.g. the
