@@ -8,9 +8,10 @@ namespace kmr::sac {
 
 namespace {
 constexpr std::uint64_t kTopEnd = std::uint64_t{1} << 62;  // group labels lie in [0, kTopEnd)
-constexpr std::uint64_t kAppendStep = std::uint64_t{1} << 57;        // kGroupMax steps fit in 64 bits
+constexpr std::uint32_t kLabelEnd = ~std::uint32_t{0};               // in-group labels lie in [0, kLabelEnd]
+constexpr std::uint32_t kAppendStep = std::uint32_t{1} << 25;        // kGroupMax + 1 steps fit in 32 bits
 constexpr std::uint64_t kGroupAppendStep = std::uint64_t{1} << 32;   // 2^30 appended groups fit
-static_assert((OrderList::kGroupMax + 1) * kAppendStep > kAppendStep);  // no overflow
+static_assert((std::uint64_t{OrderList::kGroupMax} + 1) * kAppendStep <= kLabelEnd);
 }
 
 OrderList::OrderList() {
@@ -32,10 +33,10 @@ OrderList::~OrderList() {
   }
 }
 
-// Spreads the stamps of g evenly over the 64-bit label space.
+// Spreads the stamps of g evenly over the 32-bit label space.
 void OrderList::relabel_group(OmGroup* g) {
-  std::uint64_t step = ~std::uint64_t{0} / (std::uint64_t{g->size} + 1);
-  std::uint64_t l = 0;
+  std::uint32_t step = kLabelEnd / (g->size + 1);
+  std::uint32_t l = 0;
   for (Stamp* s = g->first; s && s->group == g; s = s->next) {
     s->label = l;
     l += step;
@@ -137,14 +138,14 @@ void OrderList::insert_after(Stamp* x, Stamp* y) {
     at_group_end = !nx || nx->group != x->group;
   }
   OmGroup* g = x->group;
-  std::uint64_t hi = at_group_end ? ~std::uint64_t{0} : nx->label;
+  std::uint32_t hi = at_group_end ? kLabelEnd : nx->label;
   if (hi - x->label < 2) {
     relabel_group(g);
-    hi = at_group_end ? ~std::uint64_t{0} : nx->label;
+    hi = at_group_end ? kLabelEnd : nx->label;
   }
   // After the group's last stamp, step by at most kAppendStep (kGroupMax such steps fit), so runs
   // of appends never exhaust the labels; elsewhere, the midpoint.
-  std::uint64_t gap = (hi - x->label) / 2;
+  std::uint32_t gap = (hi - x->label) / 2;
   y->label = x->label + (at_group_end && gap > kAppendStep ? kAppendStep : gap);
   y->group = g;
   link_after(x, y);

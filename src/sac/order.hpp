@@ -2,7 +2,7 @@
 // OrderList: the order-maintenance list of timestamps behind the trace (§1.3.1: "function calls get
 // assigned two time stamps ... so that the function calls can be ordered sequentially").
 // Two-level labelling (Dietz–Sleator; Bender et al. 2002): stamps live in groups of at most
-// kGroupMax with 64-bit labels inside the group; groups carry 62-bit labels, relabelled over the
+// kGroupMax with 32-bit labels inside the group; groups carry 62-bit labels, relabelled over the
 // smallest sparse-enough aligned label range (Bender et al.'s density thresholds). Guarantees (each tested in tests/sac/order_test.cpp):
 //  * before(a, b) is the list order, for every pair of live stamps, after any sequence of
 //    insert_after / remove, including adversarial patterns (always after the same stamp, always
@@ -17,11 +17,13 @@ namespace kmr::sac {
 
 struct OmGroup;
 
+// 28 bytes and 4 bytes of tail padding, which classes deriving from Stamp reuse (trace nodes keep
+// their kind and size there): in-group labels are 32 bits (a group holds at most kGroupMax stamps).
 struct Stamp {
   OmGroup* group = nullptr;
-  std::uint64_t label = 0;
   Stamp* prev = nullptr;
   Stamp* next = nullptr;
+  std::uint32_t label = 0;
 };
 
 struct OmGroup {

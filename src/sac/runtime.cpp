@@ -142,11 +142,11 @@ void Runtime::heap_up(std::size_t i) {
     std::size_t p = (i - 1) / 2;
     if (!OrderList::before(x, heap_[p])) break;
     heap_[i] = heap_[p];
-    heap_[i]->heap = static_cast<std::int64_t>(i);
+    heap_[i]->heap = static_cast<std::int32_t>(i);
     i = p;
   }
   heap_[i] = x;
-  x->heap = static_cast<std::int64_t>(i);
+  x->heap = static_cast<std::int32_t>(i);
 }
 
 void Runtime::heap_down(std::size_t i) {
@@ -158,11 +158,11 @@ void Runtime::heap_down(std::size_t i) {
     if (c + 1 < n && OrderList::before(heap_[c + 1], heap_[c])) ++c;
     if (!OrderList::before(heap_[c], x)) break;
     heap_[i] = heap_[c];
-    heap_[i]->heap = static_cast<std::int64_t>(i);
+    heap_[i]->heap = static_cast<std::int32_t>(i);
     i = c;
   }
   heap_[i] = x;
-  x->heap = static_cast<std::int64_t>(i);
+  x->heap = static_cast<std::int32_t>(i);
 }
 
 void Runtime::heap_push(ReadNode* r) {
@@ -183,7 +183,7 @@ void Runtime::heap_erase(ReadNode* r) {
   r->heap = -1;
   if (last != r) {
     heap_[i] = last;
-    last->heap = static_cast<std::int64_t>(i);
+    last->heap = static_cast<std::int32_t>(i);
     heap_up(i);
     heap_down(static_cast<std::size_t>(last->heap));
   }
@@ -311,7 +311,7 @@ void Runtime::kill(Node* n) {
       bool same = w->same_as_previous();
       while (ReadNode* r = v->readers) {
         unlink_reader(r);
-        r->ver = p;
+        static_cast<IReadNode*>(r)->ver = p;
         link_reader(r, &p->readers);
         if (!same && r->heap < 0) heap_push(r);
       }

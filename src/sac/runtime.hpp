@@ -115,9 +115,11 @@ ModBase* anchor_of(const std::tuple<A...>& t) {
 // ---- trace nodes ------------------------------------------------------------------------------
 enum class Kind : std::uint8_t { ReadStart, End, MemoStart, Alloc, Write, IWrite, Hook };
 
+// Node = vtable pointer + Stamp; kind, flag and size live in the Stamp's tail padding (40 bytes).
 struct Node : Stamp {
   Kind kind;
-  std::uint32_t bytes = 0;
+  bool global = false;        // KeyedNode: in the runtime's hash table, else on its anchor's list
+  std::uint16_t bytes = 0;    // allocation size (make_node checks that it fits)
   explicit Node(Kind k) : kind(k) {}
   virtual ~Node() = default;
 };
@@ -133,11 +135,14 @@ struct ReadNode : Node {
   ReadNode** rhead = nullptr;  // head of the reader list it is on (a Mod's, or an IMod version's)
   ReadNode* rprev = nullptr;
   ReadNode* rnext = nullptr;
-  IVersion* ver = nullptr;     // for reads of an IMod: the version read
   Node* end = nullptr;
-  std::int64_t heap = -1;  // index in the queue of affected reads, −1 if not queued
+  std::int32_t heap = -1;  // index in the queue of affected reads, −1 if not queued
   ReadNode() : Node(Kind::ReadStart) {}
   virtual void rerun() = 0;
+};
+
+struct IReadNode : ReadNode {  // a read of an IMod: on the reader list of the version it sees
+  IVersion* ver = nullptr;
 };
 
 struct KeyedNode : Node {  // memo and alloc nodes, indexed by key hash
@@ -145,7 +150,6 @@ struct KeyedNode : Node {  // memo and alloc nodes, indexed by key hash
   const void* tag = nullptr;  // identifies the key/value types
   KeyedNode* hnext = nullptr;
   KeyedNode** hpprev = nullptr;
-  bool global = false;  // in the runtime's hash table, else on its anchor modifiable's list
   using Node::Node;
 };
 
@@ -225,6 +229,9 @@ template <class T>
 using IBox = IMod<T>;
 
 inline std::uint64_t canon_key(const ModBase* m) { return m ? m->name : 0x6e696cULL; }
+
+static_assert(sizeof(Node) == 40, "sac: Node should reuse the Stamp's tail padding");
+static_assert(sizeof(ReadNode) == 88);
 
 // ---- statistics -------------------------------------------------------------------------------
 struct Stats {
@@ -409,7 +416,7 @@ class Runtime {
       ReadNode* nx = r->rnext;
       if (OrderList::before(w, r)) {
         unlink_reader(r);
-        r->ver = v;
+        static_cast<IReadNode*>(r)->ver = v;
         link_reader(r, &v->readers);
         if (!same && r->heap < 0) heap_push(r);
       }
@@ -511,7 +518,7 @@ class Runtime {
     explicit MemoImpl(const Key& k) : key(k) {}
   };
   template <class T, class F>
-  struct IReadImpl : ReadNode {
+  struct IReadImpl : IReadNode {
     F k;
     template <class G>
     explicit IReadImpl(G&& g) : k(std::forward<G>(g)) {}
@@ -575,9 +582,10 @@ class Runtime {
   template <class N, class... A>
   N* make_node(A&&... a) {
     static_assert(alignof(N) <= 8, "sac: trace nodes (closures, keys, results) need at most 8-byte alignment");
+    static_assert(sizeof(N) <= 0xffff, "sac: a trace node (closure, key, result) must be smaller than 64 KiB");
     void* p = raw_alloc(sizeof(N));
     N* n = new (p) N(std::forward<A>(a)...);
-    n->bytes = sizeof(N);
+    n->bytes = static_cast<std::uint16_t>(sizeof(N));
     ++live_nodes_;
     return n;
   }
