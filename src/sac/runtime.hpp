@@ -481,7 +481,11 @@ class Runtime {
     m->tag = tag<M>();
     m->label = &label;
     R result = body();
-    m->end = append(make_node<EndNode>());
+    // A body whose last trace operation was a read or memo call ends where that interval ends: the
+    // memo shares its end stamp (no node of the body can follow it, and whatever discards the
+    // shared stamp discards this memo too, as intervals nest).
+    Node* last = static_cast<Node*>(now_);
+    m->end = last->kind == Kind::End ? last : append(make_node<EndNode>());
     m->result = result;
     index(m, anchor);
     return result;
