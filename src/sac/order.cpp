@@ -8,8 +8,8 @@ namespace kmr::sac {
 
 namespace {
 constexpr std::uint64_t kTopEnd = std::uint64_t{1} << 62;  // group labels lie in [0, kTopEnd)
-constexpr std::uint32_t kLabelEnd = ~std::uint32_t{0};               // in-group labels lie in [0, kLabelEnd]
-constexpr std::uint32_t kAppendStep = std::uint32_t{1} << 25;        // kGroupMax + 1 steps fit in 32 bits
+constexpr std::uint32_t kLabelEnd = OrderList::kLabelEnd;
+constexpr std::uint32_t kAppendStep = OrderList::kAppendStep;
 constexpr std::uint64_t kGroupAppendStep = std::uint64_t{1} << 32;   // 2^30 appended groups fit
 static_assert((std::uint64_t{OrderList::kGroupMax} + 1) * kAppendStep <= kLabelEnd);
 }
@@ -119,7 +119,7 @@ void OrderList::split(OmGroup* g) {
   relabel_group(h);
 }
 
-void OrderList::insert_after(Stamp* x, Stamp* y) {
+void OrderList::insert_after_slow(Stamp* x, Stamp* y) {
   Stamp* nx = x->next;
   bool at_group_end = !nx || nx->group != x->group;
   if (x->group->size >= kGroupMax) {

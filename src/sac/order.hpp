@@ -46,7 +46,24 @@ class OrderList {
   Stamp* base() { return &base_; }  // the first stamp; never removed
   const Stamp* base() const { return &base_; }
   Stamp* last() { return last_; }
-  void insert_after(Stamp* x, Stamp* y);  // y (unlinked) goes right after x
+  static constexpr std::uint32_t kLabelEnd = ~std::uint32_t{0};         // in-group labels lie in [0, kLabelEnd]
+  static constexpr std::uint32_t kAppendStep = std::uint32_t{1} << 25;  // kGroupMax + 1 steps fit in 32 bits
+  void insert_after(Stamp* x, Stamp* y) {  // y (unlinked) goes right after x
+    OmGroup* g = x->group;
+    if (!x->next && g->size < kGroupMax && kLabelEnd - x->label > 2 * kAppendStep) {
+      // Fast path, appending at the end of the list (what an initial run does).
+      y->label = x->label + kAppendStep;
+      y->group = g;
+      y->prev = x;
+      y->next = nullptr;
+      x->next = y;
+      last_ = y;
+      ++g->size;
+      ++size_;
+      return;
+    }
+    insert_after_slow(x, y);
+  }
   void remove(Stamp* y);                  // unlinks y (not the base)
   static bool before(const Stamp* a, const Stamp* b) {
     return a->group == b->group ? a->label < b->label : a->group->label < b->group->label;
@@ -65,6 +82,7 @@ class OrderList {
   OmGroup* insert_group_after(OmGroup* g);
   void remove_group(OmGroup* g);
   void link_after(Stamp* x, Stamp* y);  // list links only
+  void insert_after_slow(Stamp* x, Stamp* y);
 
   Stamp base_;
   Stamp* last_ = &base_;
