@@ -250,8 +250,8 @@ struct Stats {
 
 // ---- memory -----------------------------------------------------------------------------------
 // Size-classed free lists with 8-byte classes (nodes and modifiables need no more alignment: make_node
-// and make_mod check it), carved from chunks that grow from 64 KiB to 32 MiB; chunks of 2 MiB and
-// more are given transparent huge pages. Blocks of 1 KiB and more use operator new.
+// and make_mod check it), carved from chunks that grow from 64 KiB to 32 MiB (small runtimes stay
+// small). Blocks of 1 KiB and more use operator new.
 class NodePool {
  public:
   static constexpr std::size_t kClasses = 128;
@@ -285,7 +285,6 @@ class NodePool {
   }
 
  private:
-  static constexpr std::size_t kHuge = std::size_t{2} << 20;
   static constexpr std::size_t kMaxChunk = std::size_t{32} << 20;
   void* refill(std::size_t bytes);
   void* free_[kClasses] = {};
