@@ -45,17 +45,49 @@ Runtime::~Runtime() {
     if (n->kind == Kind::Alloc) {
       if (ModBase* m = static_cast<AllocNode*>(n)->mod) m->~ModBase();
     }
-    n->~Node();
+    destroy_node(n);
     s = nx;
   }
   for (ModBase* m : dead_) m->~ModBase();
   for (ModBase* m : inputs_) m->~ModBase();
 }
 
+void* Runtime::destroy_node(Node* n) {
+  switch (n->kind) {
+    case Kind::ReadStart: {
+      auto* r = static_cast<ReadNode*>(n);
+      r->~ReadNode();
+      return r;
+    }
+    case Kind::MemoStart: {
+      auto* m = static_cast<MemoNode*>(n);
+      m->~MemoNode();
+      return m;
+    }
+    case Kind::IWrite: {
+      auto* w = static_cast<IWriteNode*>(n);
+      w->~IWriteNode();
+      return w;
+    }
+    case Kind::Hook: {
+      auto* h = static_cast<HookNode*>(n);
+      h->~HookNode();
+      return h;
+    }
+    case Kind::Alloc:
+    case Kind::Write:
+    case Kind::End:
+      break;  // trivially destructible, Node at offset 0
+  }
+  static_assert(std::is_trivially_destructible_v<AllocNode> && std::is_trivially_destructible_v<WriteNode> &&
+                std::is_trivially_destructible_v<EndNode>);
+  return n;
+}
+
 void Runtime::free_node(Node* n) {
   std::size_t b = n->bytes;
-  n->~Node();
-  raw_free(n, b);
+  void* p = destroy_node(n);
+  raw_free(p, b);
   --live_nodes_;
 }
 

@@ -115,13 +115,14 @@ ModBase* anchor_of(const std::tuple<A...>& t) {
 // ---- trace nodes ------------------------------------------------------------------------------
 enum class Kind : std::uint8_t { ReadStart, End, MemoStart, Alloc, Write, IWrite, Hook };
 
-// Node = vtable pointer + Stamp; kind, flag and size live in the Stamp's tail padding (40 bytes).
+// Node = Stamp with kind, flag and size in the Stamp's tail padding (32 bytes), not polymorphic:
+// only nodes that hold a closure or a typed key/value (read, memo, iwrite, hook) carry a vtable
+// pointer (placed before their Node part); Runtime::destroy_node dispatches on kind.
 struct Node : Stamp {
   Kind kind;
   bool global = false;        // KeyedNode: in the runtime's hash table, else on its anchor's list
   std::uint16_t bytes = 0;    // allocation size (make_node checks that it fits)
   explicit Node(Kind k) : kind(k) {}
-  virtual ~Node() = default;
 };
 
 struct EndNode : Node {
@@ -138,6 +139,7 @@ struct ReadNode : Node {
   Node* end = nullptr;
   std::int32_t heap = -1;  // index in the queue of affected reads, −1 if not queued
   ReadNode() : Node(Kind::ReadStart) {}
+  virtual ~ReadNode() = default;
   virtual void rerun() = 0;
 };
 
@@ -157,6 +159,7 @@ struct MemoNode : KeyedNode {
   const Label* label = nullptr;
   Node* end = nullptr;
   MemoNode() : KeyedNode(Kind::MemoStart) {}
+  virtual ~MemoNode() = default;  // MemoImpl holds the key and result
 };
 
 struct AllocNode : KeyedNode {
@@ -183,12 +186,14 @@ struct IWriteNode : Node {
   ModBase* mod = nullptr;
   IVersion version;
   IWriteNode() : Node(Kind::IWrite) {}
+  virtual ~IWriteNode() = default;
   virtual bool same_as_previous() const = 0;
 };
 
 struct HookNode : Node {
   const Label* label = nullptr;
   HookNode() : Node(Kind::Hook) {}
+  virtual ~HookNode() = default;
   virtual void undo() = 0;
 };
 
@@ -230,8 +235,8 @@ using IBox = IMod<T>;
 
 inline std::uint64_t canon_key(const ModBase* m) { return m ? m->name : 0x6e696cULL; }
 
-static_assert(sizeof(Node) == 40, "sac: Node should reuse the Stamp's tail padding");
-static_assert(sizeof(ReadNode) == 88);
+static_assert(sizeof(Node) == 32, "sac: Node should reuse the Stamp's tail padding");
+static_assert(sizeof(ReadNode) == 88 && sizeof(AllocNode) == 72 && sizeof(WriteNode) == 40 && sizeof(EndNode) == 32);
 
 // ---- statistics -------------------------------------------------------------------------------
 struct Stats {
@@ -601,6 +606,7 @@ class Runtime {
     return m;
   }
   void free_node(Node* n);
+  static void* destroy_node(Node* n);  // runs the destructor of n's type; returns its allocation
   void free_mod(ModBase* m);
   Node* append(Node* n) {
     om_.insert_after(now_, n);
