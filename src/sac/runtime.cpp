@@ -52,28 +52,25 @@ Runtime::~Runtime() {
   for (ModBase* m : inputs_) m->~ModBase();
 }
 
+namespace {
+template <class T>
+void* destroy_as(Node* n) {  // T has a virtual destructor; its object starts at the returned address
+  auto* x = static_cast<T*>(n);
+  x->~T();
+  return x;
+}
+}  // namespace
+
 void* Runtime::destroy_node(Node* n) {
   switch (n->kind) {
-    case Kind::ReadStart: {
-      auto* r = static_cast<ReadNode*>(n);
-      r->~ReadNode();
-      return r;
-    }
-    case Kind::MemoStart: {
-      auto* m = static_cast<MemoNode*>(n);
-      m->~MemoNode();
-      return m;
-    }
-    case Kind::IWrite: {
-      auto* w = static_cast<IWriteNode*>(n);
-      w->~IWriteNode();
-      return w;
-    }
-    case Kind::Hook: {
-      auto* h = static_cast<HookNode*>(n);
-      h->~HookNode();
-      return h;
-    }
+    case Kind::ReadStart:
+      return destroy_as<ReadNode>(n);
+    case Kind::MemoStart:
+      return destroy_as<MemoNode>(n);
+    case Kind::IWrite:
+      return destroy_as<IWriteNode>(n);
+    case Kind::Hook:
+      return destroy_as<HookNode>(n);
     case Kind::Alloc:
     case Kind::Write:
     case Kind::End:
