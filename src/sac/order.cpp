@@ -8,6 +8,10 @@ namespace kmr::sac {
 
 namespace {
 constexpr std::uint64_t kTopEnd = std::uint64_t{1} << 62;  // group labels lie in [0, kTopEnd)
+constexpr std::uint32_t kLabelEnd = OrderList::kLabelEnd;
+constexpr std::uint32_t kAppendStep = OrderList::kAppendStep;
+constexpr std::uint64_t kGroupAppendStep = std::uint64_t{1} << 32;   // 2^30 appended groups fit
+static_assert((std::uint64_t{OrderList::kGroupMax} + 1) * kAppendStep <= kLabelEnd);
 }
 
 OrderList::OrderList() {
@@ -29,10 +33,10 @@ OrderList::~OrderList() {
   }
 }
 
-// Spreads the stamps of g evenly over the 64-bit label space.
+// Spreads the stamps of g evenly over the 32-bit label space.
 void OrderList::relabel_group(OmGroup* g) {
-  std::uint64_t step = ~std::uint64_t{0} / (std::uint64_t{g->size} + 1);
-  std::uint64_t l = 0;
+  std::uint32_t step = kLabelEnd / (g->size + 1);
+  std::uint32_t l = 0;
   for (Stamp* s = g->first; s && s->group == g; s = s->next) {
     s->label = l;
     l += step;
@@ -80,7 +84,8 @@ OmGroup* OrderList::insert_group_after(OmGroup* g) {
     KMR_CHECK(hi - g->label >= 2, "OrderList: no free group label after relabelling");
   }
   auto* h = new OmGroup;
-  h->label = g->label + (hi - g->label) / 2;
+  std::uint64_t half = (hi - g->label) / 2;  // after the last group: a bounded step (appends)
+  h->label = g->label + (!g->next && half > kGroupAppendStep ? kGroupAppendStep : half);
   h->prev = g;
   h->next = g->next;
   if (g->next) g->next->prev = h;
@@ -114,23 +119,46 @@ void OrderList::split(OmGroup* g) {
   relabel_group(h);
 }
 
-void OrderList::insert_after(Stamp* x, Stamp* y) {
-  if (x->group->size >= kGroupMax) split(x->group);
-  OmGroup* g = x->group;
+void OrderList::insert_after_slow(Stamp* x, Stamp* y) {
   Stamp* nx = x->next;
-  std::uint64_t hi = (nx && nx->group == g) ? nx->label : ~std::uint64_t{0};
+  bool at_group_end = !nx || nx->group != x->group;
+  if (x->group->size >= kGroupMax) {
+    if (at_group_end) {
+      // Appending after a full group's last stamp (the common case: a run appends at the end of
+      // the trace): start a new group instead of splitting, so no stamp is relabelled.
+      OmGroup* h = insert_group_after(x->group);
+      h->first = y;
+      h->size = 1;
+      y->label = kAppendStep;
+      y->group = h;
+      link_after(x, y);
+      return;
+    }
+    split(x->group);
+    at_group_end = !nx || nx->group != x->group;
+  }
+  OmGroup* g = x->group;
+  std::uint32_t hi = at_group_end ? kLabelEnd : nx->label;
   if (hi - x->label < 2) {
     relabel_group(g);
-    hi = (nx && nx->group == g) ? nx->label : ~std::uint64_t{0};
+    hi = at_group_end ? kLabelEnd : nx->label;
   }
-  y->label = x->label + (hi - x->label) / 2;
+  // After the group's last stamp, step by at most kAppendStep (kGroupMax such steps fit), so runs
+  // of appends never exhaust the labels; elsewhere, the midpoint.
+  std::uint32_t gap = (hi - x->label) / 2;
+  y->label = x->label + (at_group_end && gap > kAppendStep ? kAppendStep : gap);
   y->group = g;
+  link_after(x, y);
+  ++g->size;
+}
+
+void OrderList::link_after(Stamp* x, Stamp* y) {
+  Stamp* nx = x->next;
   y->prev = x;
   y->next = nx;
   if (nx) nx->prev = y;
   else last_ = y;
   x->next = y;
-  ++g->size;
   ++size_;
 }
 

@@ -2,7 +2,7 @@
 // OrderList: the order-maintenance list of timestamps behind the trace (§1.3.1: "function calls get
 // assigned two time stamps ... so that the function calls can be ordered sequentially").
 // Two-level labelling (Dietz–Sleator; Bender et al. 2002): stamps live in groups of at most
-// kGroupMax with 64-bit labels inside the group; groups carry 62-bit labels, relabelled over the
+// kGroupMax with 32-bit labels inside the group; groups carry 62-bit labels, relabelled over the
 // smallest sparse-enough aligned label range (Bender et al.'s density thresholds). Guarantees (each tested in tests/sac/order_test.cpp):
 //  * before(a, b) is the list order, for every pair of live stamps, after any sequence of
 //    insert_after / remove, including adversarial patterns (always after the same stamp, always
@@ -17,11 +17,13 @@ namespace kmr::sac {
 
 struct OmGroup;
 
+// 28 bytes and 4 bytes of tail padding, which classes deriving from Stamp reuse (trace nodes keep
+// their kind and size there): in-group labels are 32 bits (a group holds at most kGroupMax stamps).
 struct Stamp {
   OmGroup* group = nullptr;
-  std::uint64_t label = 0;
   Stamp* prev = nullptr;
   Stamp* next = nullptr;
+  std::uint32_t label = 0;
 };
 
 struct OmGroup {
@@ -44,7 +46,24 @@ class OrderList {
   Stamp* base() { return &base_; }  // the first stamp; never removed
   const Stamp* base() const { return &base_; }
   Stamp* last() { return last_; }
-  void insert_after(Stamp* x, Stamp* y);  // y (unlinked) goes right after x
+  static constexpr std::uint32_t kLabelEnd = ~std::uint32_t{0};         // in-group labels lie in [0, kLabelEnd]
+  static constexpr std::uint32_t kAppendStep = std::uint32_t{1} << 25;  // kGroupMax + 1 steps fit in 32 bits
+  void insert_after(Stamp* x, Stamp* y) {  // y (unlinked) goes right after x
+    OmGroup* g = x->group;
+    if (!x->next && g->size < kGroupMax && kLabelEnd - x->label > 2 * kAppendStep) {
+      // Fast path, appending at the end of the list (what an initial run does).
+      y->label = x->label + kAppendStep;
+      y->group = g;
+      y->prev = x;
+      y->next = nullptr;
+      x->next = y;
+      last_ = y;
+      ++g->size;
+      ++size_;
+      return;
+    }
+    insert_after_slow(x, y);
+  }
   void remove(Stamp* y);                  // unlinks y (not the base)
   static bool before(const Stamp* a, const Stamp* b) {
     return a->group == b->group ? a->label < b->label : a->group->label < b->group->label;
@@ -62,6 +81,8 @@ class OrderList {
   void split(OmGroup* g);
   OmGroup* insert_group_after(OmGroup* g);
   void remove_group(OmGroup* g);
+  void link_after(Stamp* x, Stamp* y);  // list links only
+  void insert_after_slow(Stamp* x, Stamp* y);
 
   Stamp base_;
   Stamp* last_ = &base_;

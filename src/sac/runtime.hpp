@@ -115,11 +115,14 @@ ModBase* anchor_of(const std::tuple<A...>& t) {
 // ---- trace nodes ------------------------------------------------------------------------------
 enum class Kind : std::uint8_t { ReadStart, End, MemoStart, Alloc, Write, IWrite, Hook };
 
+// Node = Stamp with kind, flag and size in the Stamp's tail padding (32 bytes), not polymorphic:
+// only nodes that hold a closure or a typed key/value (read, memo, iwrite, hook) carry a vtable
+// pointer (placed before their Node part); Runtime::destroy_node dispatches on kind.
 struct Node : Stamp {
   Kind kind;
-  std::uint32_t bytes = 0;
+  bool global = false;        // KeyedNode: in the runtime's hash table, else on its anchor's list
+  std::uint16_t bytes = 0;    // allocation size (make_node checks that it fits)
   explicit Node(Kind k) : kind(k) {}
-  virtual ~Node() = default;
 };
 
 struct EndNode : Node {
@@ -133,11 +136,15 @@ struct ReadNode : Node {
   ReadNode** rhead = nullptr;  // head of the reader list it is on (a Mod's, or an IMod version's)
   ReadNode* rprev = nullptr;
   ReadNode* rnext = nullptr;
-  IVersion* ver = nullptr;     // for reads of an IMod: the version read
   Node* end = nullptr;
-  std::int64_t heap = -1;  // index in the queue of affected reads, −1 if not queued
+  std::int32_t heap = -1;  // index in the queue of affected reads, −1 if not queued
   ReadNode() : Node(Kind::ReadStart) {}
+  virtual ~ReadNode() = default;
   virtual void rerun() = 0;
+};
+
+struct IReadNode : ReadNode {  // a read of an IMod: on the reader list of the version it sees
+  IVersion* ver = nullptr;
 };
 
 struct KeyedNode : Node {  // memo and alloc nodes, indexed by key hash
@@ -145,7 +152,6 @@ struct KeyedNode : Node {  // memo and alloc nodes, indexed by key hash
   const void* tag = nullptr;  // identifies the key/value types
   KeyedNode* hnext = nullptr;
   KeyedNode** hpprev = nullptr;
-  bool global = false;  // in the runtime's hash table, else on its anchor modifiable's list
   using Node::Node;
 };
 
@@ -153,6 +159,7 @@ struct MemoNode : KeyedNode {
   const Label* label = nullptr;
   Node* end = nullptr;
   MemoNode() : KeyedNode(Kind::MemoStart) {}
+  virtual ~MemoNode() = default;  // MemoImpl holds the key and result
 };
 
 struct AllocNode : KeyedNode {
@@ -179,12 +186,14 @@ struct IWriteNode : Node {
   ModBase* mod = nullptr;
   IVersion version;
   IWriteNode() : Node(Kind::IWrite) {}
+  virtual ~IWriteNode() = default;
   virtual bool same_as_previous() const = 0;
 };
 
 struct HookNode : Node {
   const Label* label = nullptr;
   HookNode() : Node(Kind::Hook) {}
+  virtual ~HookNode() = default;
   virtual void undo() = 0;
 };
 
@@ -226,6 +235,9 @@ using IBox = IMod<T>;
 
 inline std::uint64_t canon_key(const ModBase* m) { return m ? m->name : 0x6e696cULL; }
 
+static_assert(sizeof(Node) == 32, "sac: Node should reuse the Stamp's tail padding");
+static_assert(sizeof(ReadNode) == 88 && sizeof(AllocNode) == 72 && sizeof(WriteNode) == 40 && sizeof(EndNode) == 32);
+
 // ---- statistics -------------------------------------------------------------------------------
 struct Stats {
   std::uint64_t trace_nodes = 0;    // live trace nodes (reads, ends, memos, allocs, writes, hooks)
@@ -239,6 +251,52 @@ struct Stats {
   std::uint64_t nodes_discarded = 0;
   std::uint64_t hooks_run = 0;
   std::uint64_t om_relabels = 0;
+};
+
+// ---- memory -----------------------------------------------------------------------------------
+// Size-classed free lists with 8-byte classes (nodes and modifiables need no more alignment: make_node
+// and make_mod check it), carved from chunks that grow from 64 KiB to 32 MiB (small runtimes stay
+// small). Blocks of 1 KiB and more use operator new.
+class NodePool {
+ public:
+  static constexpr std::size_t kClasses = 128;
+  NodePool() = default;
+  NodePool(const NodePool&) = delete;
+  NodePool& operator=(const NodePool&) = delete;
+  ~NodePool();
+  static std::size_t rounded(std::size_t bytes) { return (bytes + 7) / 8 * 8; }
+  void* alloc(std::size_t bytes) {
+    std::size_t c = (bytes + 7) / 8;
+    if (c >= kClasses) return ::operator new(bytes);
+    if (void* p = free_[c]) {
+      free_[c] = *static_cast<void**>(p);
+      return p;
+    }
+    std::size_t b = c * 8;
+    if (left_ < b) return refill(bytes);
+    void* p = cur_;
+    cur_ += b;
+    left_ -= b;
+    return p;
+  }
+  void free(void* p, std::size_t bytes) {
+    std::size_t c = (bytes + 7) / 8;
+    if (c >= kClasses) {
+      ::operator delete(p);
+      return;
+    }
+    *static_cast<void**>(p) = free_[c];
+    free_[c] = p;
+  }
+
+ private:
+  static constexpr std::size_t kMaxChunk = std::size_t{32} << 20;
+  void* refill(std::size_t bytes);
+  void* free_[kClasses] = {};
+  char* cur_ = nullptr;
+  std::size_t left_ = 0;
+  std::size_t next_chunk_ = std::size_t{64} << 10;
+  std::vector<void*> chunks_;
 };
 
 // ---- the runtime ------------------------------------------------------------------------------
@@ -362,7 +420,7 @@ class Runtime {
       ReadNode* nx = r->rnext;
       if (OrderList::before(w, r)) {
         unlink_reader(r);
-        r->ver = v;
+        static_cast<IReadNode*>(r)->ver = v;
         link_reader(r, &v->readers);
         if (!same && r->heap < 0) heap_push(r);
       }
@@ -427,7 +485,11 @@ class Runtime {
     m->tag = tag<M>();
     m->label = &label;
     R result = body();
-    m->end = append(make_node<EndNode>());
+    // A body whose last trace operation was a read or memo call ends where that interval ends: the
+    // memo shares its end stamp (no node of the body can follow it, and whatever discards the
+    // shared stamp discards this memo too, as intervals nest).
+    Node* last = static_cast<Node*>(now_);
+    m->end = last->kind == Kind::End ? last : append(make_node<EndNode>());
     m->result = result;
     index(m, anchor);
     return result;
@@ -464,7 +526,7 @@ class Runtime {
     explicit MemoImpl(const Key& k) : key(k) {}
   };
   template <class T, class F>
-  struct IReadImpl : ReadNode {
+  struct IReadImpl : IReadNode {
     F k;
     template <class G>
     explicit IReadImpl(G&& g) : k(std::forward<G>(g)) {}
@@ -517,24 +579,34 @@ class Runtime {
     return finger_ && OrderList::before(now_, s) && OrderList::before(s, finger_);
   }
 
-  void* raw_alloc(std::size_t bytes);
-  void raw_free(void* p, std::size_t bytes);
+  void* raw_alloc(std::size_t bytes) {
+    bytes_ += NodePool::rounded(bytes);
+    return pool_.alloc(bytes);
+  }
+  void raw_free(void* p, std::size_t bytes) {
+    bytes_ -= NodePool::rounded(bytes);
+    pool_.free(p, bytes);
+  }
   template <class N, class... A>
   N* make_node(A&&... a) {
+    static_assert(alignof(N) <= 8, "sac: trace nodes (closures, keys, results) need at most 8-byte alignment");
+    static_assert(sizeof(N) <= 0xffff, "sac: a trace node (closure, key, result) must be smaller than 64 KiB");
     void* p = raw_alloc(sizeof(N));
     N* n = new (p) N(std::forward<A>(a)...);
-    n->bytes = sizeof(N);
+    n->bytes = static_cast<std::uint16_t>(sizeof(N));
     ++live_nodes_;
     return n;
   }
   template <class M>
   M* make_mod() {
+    static_assert(alignof(M) <= 8, "sac: modifiable values need at most 8-byte alignment");
     void* p = raw_alloc(sizeof(M));
     auto* m = new (p) M();
     m->bytes = sizeof(M);
     return m;
   }
   void free_node(Node* n);
+  static void* destroy_node(Node* n);  // runs the destructor of n's type; returns its allocation
   void free_mod(ModBase* m);
   Node* append(Node* n) {
     om_.insert_after(now_, n);
@@ -597,8 +669,7 @@ class Runtime {
   std::uint64_t live_owned_ = 0;
   std::uint64_t bytes_ = 0;
   Stats stats_;
-  struct Pool;
-  Pool* pool_;
+  NodePool pool_;  // frees the chunks after ~Runtime's body has run the node destructors
 };
 
 // A traceable value (§1.3.3): the computation reads it like a modifiable; its owner (e.g. the

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <fstream>
 #include <cstdio>
 #include <random>
 
@@ -118,10 +120,77 @@ BenchRow bench_exptree(std::size_t n, std::size_t edits, std::uint64_t seed) {
   return row;
 }
 
+std::uint64_t available_memory() {
+  std::ifstream f("/proc/meminfo");
+  std::string key, unit;
+  std::uint64_t kb = 0;
+  while (f >> key >> kb) {
+    std::getline(f, unit);
+    if (key == "MemAvailable:") return kb * 1024;
+  }
+  return 0;  // unknown
+}
+
+namespace {
+// Bytes held after the initial run of `program` on n elements: the runtime's own count (trace,
+// modifiables, order-maintenance groups, index) plus the harness's per-element side tables.
+constexpr double kHarnessBytesPerElement = 160;  // ListInput maps and vectors, input and id vectors
+
+double probe_bytes_here(const std::string& program, std::size_t n, std::uint64_t seed) {
+  Runtime rt;
+  if (program == "exptree") {
+    TreeInput input(rt, PlainTree::random(n, seed));
+    sa_exptree(rt, input.root());
+    return static_cast<double>(rt.stats().bytes);
+  }
+  const ListProgram& p = list_program(program);
+  std::vector<std::uint64_t> ids(n);
+  for (std::size_t i = 0; i < n; ++i) ids[i] = i + 1;
+  ListInput input(rt, bench_input(program, n, seed), ids);
+  auto reader = p.build(rt, input.root());
+  return static_cast<double>(rt.stats().bytes);
+}
+// On its own thread with a large stack (list recursion nests per element; sanitizer builds use
+// several times the frame size, hence 8× bench_all's 2 KiB per element), whatever thread calls it.
+double probe_bytes(const std::string& program, std::size_t n, std::uint64_t seed) {
+  double bytes = 0;
+  sac::with_stack(std::max<std::size_t>(std::size_t{64} << 20, n * 16384),
+                  [&] { bytes = probe_bytes_here(program, n, seed); });
+  return bytes;
+}
+}  // namespace
+
+double estimate_bench_bytes(const std::string& program, std::size_t n, std::uint64_t seed) {
+  constexpr std::size_t n0 = 2048, n1 = 16384;  // log2 ratio 3
+  double b0 = probe_bytes(program, n0, seed) / n0, b1 = probe_bytes(program, n1, seed) / n1;
+  double beta = std::max(0.0, (b1 - b0) / 3);  // Θ(n log n) programs: bytes per element grow with log n
+  double alpha = b1 - beta * std::log2(static_cast<double>(n1));
+  double per = alpha + beta * std::log2(static_cast<double>(std::max<std::size_t>(n, 2)));
+  return static_cast<double>(n) * (std::max(per, b1) + kHarnessBytesPerElement);
+}
+
+void check_bench_memory(const std::string& program, std::size_t n, std::uint64_t seed) {
+  if (n <= kBenchProbeBelow) return;
+  double need = estimate_bench_bytes(program, n, seed);
+  double avail = static_cast<double>(available_memory());
+  if (avail > 0 && need > avail) {
+    char buf[320];
+    std::snprintf(buf, sizeof buf,
+                  "kmr bench sac: %s at n=%zu needs an estimated %.2f GB of trace (measured at n=2048 and n=16384, "
+                  "extrapolated), more than the %.2f GB available (MemAvailable); choose a smaller --n",
+                  program.c_str(), n, need / 1e9, avail / 1e9);
+    throw InputError(buf);
+  }
+}
+
 std::vector<BenchRow> bench_all(std::size_t n, std::size_t edits, std::uint64_t seed, const std::vector<std::string>& only) {
   std::vector<BenchRow> rows;
   auto wanted = [&](const std::string& s) { return only.empty() || std::find(only.begin(), only.end(), s) != only.end(); };
   // List recursion nests one frame group per element: give the run a stack sized for n.
+  // Refuse before running anything if a wanted program's trace would not fit in memory.
+  for (const auto& p : list_programs())
+    if (wanted(p.name)) check_bench_memory(p.name, n, seed);
+  if (wanted("exptree")) check_bench_memory("exptree", n, seed);
   std::size_t stack = std::max<std::size_t>(std::size_t{64} << 20, n * 2048);
   sac::with_stack(stack, [&] {
     for (const auto& p : list_programs())

@@ -26,9 +26,19 @@ long long bench_value(const std::string& program, std::uint64_t r);  // a random
 
 BenchRow bench_list(const std::string& program, std::size_t n, std::size_t edits, std::uint64_t seed);
 BenchRow bench_exptree(std::size_t n, std::size_t edits, std::uint64_t seed);
-// All seven programs (map, filter, sum, quicksort, mergesort, quickhull, exptree), on a big stack.
+// All seven programs (map, filter, sum, quicksort, mergesort, quickhull, exptree), on a big stack,
+// after check_bench_memory for each wanted program.
 std::vector<BenchRow> bench_all(std::size_t n, std::size_t edits, std::uint64_t seed,
                                 const std::vector<std::string>& only = {});
+
+// Memory guard (bench_all runs it first): the bytes the initial run of `program` on n elements
+// holds, measured at n = 2048 and 16384 and extrapolated as n·(α + β·log2 n) plus the harness's
+// side tables; check_bench_memory throws InputError naming program, n, estimate and MemAvailable
+// when the estimate exceeds it (no check for n ≤ kBenchProbeBelow).
+constexpr std::size_t kBenchProbeBelow = 65536;
+std::uint64_t available_memory();  // /proc/meminfo MemAvailable in bytes, 0 if unknown
+double estimate_bench_bytes(const std::string& program, std::size_t n, std::uint64_t seed);
+void check_bench_memory(const std::string& program, std::size_t n, std::uint64_t seed);
 
 std::string bench_json(const std::vector<BenchRow>& rows);
 

@@ -56,6 +56,10 @@ printf '0 1\n3 x\n' >"$tmp/bad.txt"
 expect_error sort-bad-line 'bad.txt:2' -- simulate sort "$tmp/bad.txt"
 expect_error sort-missing 'cannot open' -- simulate sort "$tmp/none.txt"
 expect_error sort-until 'not a multiple of the lattice step' -- simulate sort "$tmp/sep.txt" --until 0.0001220703125 --lattice-bits 2
+# Crash hazard: a size whose trace cannot fit is refused before anything runs (map at 10^8 alone
+# needs tens of GB; the sorts far more).
+expect_error bench-too-big 'map at n=100000000 needs an estimated' -- bench sac --n 100000000
+expect_error bench-too-big-sort 'quicksort at n=100000000 needs an estimated' -- bench sac --n 100000000 --program quicksort
 expect_error unknown-command "unknown command 'frob'" -- frob
 
 echo "cli: $passed passed, $failed failed"

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <random>
 
+#include "sacprograms/bench.hpp"
 #include "sacprograms/exptree.hpp"
 #include "sacprograms/session.hpp"
 
@@ -106,6 +107,26 @@ TEST(SacPrograms, S1_3_ExptreeEditsMatchEvaluationAndFromScratch) {
     ASSERT_EQ(rt.signature(), fresh.signature()) << "edit " << e;
     ASSERT_EQ(rt.stats().trace_nodes, fresh.stats().trace_nodes);
     ASSERT_EQ(rt.stats().live_mods, fresh.stats().live_mods);
+  }
+}
+
+// The benchmark's memory guard: estimates grow like the traces do, and a size that cannot fit is
+// refused with an InputError naming the program, n and the availability.
+TEST(SacBenchGuard, EstimatesScaleAndHugeSizesAreRefused) {
+  double map6 = estimate_bench_bytes("map", 1000000, 20121);
+  EXPECT_GT(map6, 1e8);   // at least ~100 bytes per element
+  EXPECT_LT(map6, 5e9);   // and not absurd for a linear program
+  double qs5 = estimate_bench_bytes("quicksort", 100000, 20121), qs6 = estimate_bench_bytes("quicksort", 1000000, 20121);
+  EXPECT_GT(qs6, 10 * qs5);  // Θ(n log n) trace: more than linear growth
+  EXPECT_NO_THROW(check_bench_memory("quicksort", kBenchProbeBelow, 20121));  // small sizes: no check
+  if (available_memory() == 0) GTEST_SKIP() << "no /proc/meminfo";
+  try {
+    check_bench_memory("quicksort", 100000000, 20121);
+    FAIL() << "quicksort at 10^8 was not refused";
+  } catch (const kmr::InputError& e) {
+    std::string what = e.what();
+    EXPECT_NE(what.find("quicksort at n=100000000"), std::string::npos) << what;
+    EXPECT_NE(what.find("available"), std::string::npos) << what;
   }
 }
 
