@@ -40,6 +40,9 @@ std::vector<Check> kinetic_checks();
 std::vector<Check> sac_checks();
 std::vector<Check> wellspaced_checks();
 
+// A measured figure as text with 3 significant digits (one format for every check).
+std::string fmt(double x);
+
 // Runs the checks, prints a table to `out` (and JSON to `json` when not null). Returns 0 iff all pass.
 int run_audit(const Options& options, std::ostream& out, std::ostream* json);
 

@@ -79,10 +79,10 @@ Verdict kinetic_sorting(const Options& options) {
                 std::to_string(checked) + " batches checked against the exact sort";
   v.figure("events", std::to_string(c.events));
   v.figure("batches", std::to_string(c.batches));
-  v.figure("mean batch size", std::to_string(c.batches ? static_cast<double>(c.events) / c.batches : 0.0));
+  v.figure("mean batch size", fmt(c.batches ? static_cast<double>(c.events) / c.batches : 0.0));
   v.figure("max batch", std::to_string(c.max_batch));
   v.figure("certificates live at end", std::to_string(c.live()));
-  v.figure("events per second (unchecked run)", std::to_string(unchecked_seconds > 0 ? c.events / unchecked_seconds : 0.0));
+  v.figure("events per second (unchecked run)", fmt(unchecked_seconds > 0 ? c.events / unchecked_seconds : 0.0));
   return v;
 }
 

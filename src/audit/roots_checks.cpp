@@ -101,9 +101,9 @@ Verdict lattice_isolation(const Options& options, bool failures_only) {
     v.summary = std::to_string(trials) + " planted-root polynomials (lattice points, clusters closer than δ, multiplicities ≤ 3)";
   v.figure("max degree", std::to_string(max_degree));
   v.figure("max coefficient bits", std::to_string(max_bits));
-  v.figure("Sturm queries per polynomial", std::to_string(static_cast<double>(queries) / trials));
+  v.figure("Sturm queries per polynomial", fmt(static_cast<double>(queries) / trials));
   if (failures_only) v.figure("start times checked", std::to_string(failures_checked));
-  v.figure("seconds", std::to_string(seconds));
+  v.figure("seconds", fmt(seconds));
   return v;
 }
 

@@ -1,4 +1,5 @@
 #include <chrono>
+#include <cstdio>
 #include <exception>
 #include <iomanip>
 #include <ostream>
@@ -19,6 +20,12 @@ std::string json_escape(const std::string& s) {
   return r;
 }
 }  // namespace
+
+std::string fmt(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", x);
+  return b;
+}
 
 int run_audit(const Options& options, std::ostream& out, std::ostream* json) {
   int failed = 0, run = 0;

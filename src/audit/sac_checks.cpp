@@ -15,11 +15,6 @@ namespace kmr::audit {
 namespace {
 using namespace kmr::sacprograms;
 
-std::string fmt(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", x);
-  return b;
-}
 
 // Random single edits and batches; after each propagation compare with a from-scratch run.
 Verdict propagation_equals_from_scratch(const Options& o) {

@@ -17,11 +17,6 @@ namespace {
 
 using namespace kmr::wellspaced;
 
-std::string fmt(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", x);
-  return b;
-}
 
 template <std::size_t D>
 bool same(const WellSpacedSet<D>& a, const WellSpacedSet<D>& b) {
