@@ -30,7 +30,7 @@ std::string fmt(double x) {
 int run_audit(const Options& options, std::ostream& out, std::ostream* json) {
   int failed = 0, run = 0;
   if (json) *json << "[";
-  out << std::left << std::setw(24) << "claim" << std::setw(6) << "verdict" << "  check\n";
+  out << std::left << std::setw(28) << "claim" << std::setw(6) << "verdict" << "  check\n";
   for (const Check& check : all_checks()) {
     if (check.claim.rfind(options.only, 0) != 0) continue;
     Verdict v;
@@ -44,10 +44,10 @@ int run_audit(const Options& options, std::ostream& out, std::ostream* json) {
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ++run;
     if (!v.pass) ++failed;
-    out << std::left << std::setw(24) << check.claim << std::setw(6) << (v.pass ? "PASS" : "FAIL") << "  "
+    out << std::left << std::setw(28) << check.claim << std::setw(6) << (v.pass ? "PASS" : "FAIL") << "  "
         << check.title << "\n";
-    if (!v.summary.empty()) out << std::string(32, ' ') << v.summary << "\n";
-    for (auto& [name, value] : v.figures) out << std::string(32, ' ') << name << " = " << value << "\n";
+    if (!v.summary.empty()) out << std::string(36, ' ') << v.summary << "\n";
+    for (auto& [name, value] : v.figures) out << std::string(36, ' ') << name << " = " << value << "\n";
     if (json) {
       *json << (run > 1 ? "," : "") << "\n {\"claim\":\"" << json_escape(check.claim) << "\",\"title\":\""
             << json_escape(check.title) << "\",\"pass\":" << (v.pass ? "true" : "false") << ",\"summary\":\""
