@@ -140,6 +140,7 @@ int run(const Args& args, const std::string& input_path, Params params) {
        << ", \"cv_calls\": " << cstats.cv_calls << ", \"cv_squares_max\": " << cstats.cv_squares_max
        << ", \"cv_squares_mean\": " << json_num(cstats.cv_calls ? double(cstats.cv_squares_total) / cstats.cv_calls : 0)
        << ", \"cv_neighbors_max\": " << cstats.cv_neighbors_max << ", \"steiner_per_fill_max\": " << cstats.steiner_per_fill_max
+       << ", \"exact_fallbacks\": " << cstats.exact_fallbacks
        << ", \"seconds\": " << json_num(cstats.seconds) << "},\n  \"updates\": [";
     for (std::size_t i = 0; i < ustats.size(); ++i) {
       const auto& [s, sc] = ustats[i];

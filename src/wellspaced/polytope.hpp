@@ -1,106 +1,138 @@
 #pragma once
-// Exact convex polytopes in Q^D by halfspace clipping (§3.2.4: clipped Voronoi cells).
+// Convex polytopes in Q^D by halfspace clipping (§3.2.4: clipped Voronoi cells), over a number type
+// NT: Q (exact rationals) or exact::IntervalNT (the fast tier: it throws exact::Uncertain whenever a
+// decision is too close to call, and the caller redoes the computation with NT = Q).
 // Guarantees (tests/wellspaced/polytope_test.cpp):
-//  * clip() keeps exactly the vertices of the clipped polytope (rational, exact); each vertex carries
-//    the sorted set of constraints tight at it. Edges are found by the combinatorial adjacency test
-//    (p, q adjacent iff no third vertex is tight on every constraint tight at both), exact also for
-//    degenerate (cospherical, cocircular) inputs.
-//  * face_distance_at_most(): exact decision "some point of the face {x ∈ P : constraint j tight}
-//    lies within squared distance r2 of point v", by the active-set enumeration of the KKT points.
+//  * clip() keeps exactly the vertices of the clipped polytope; each vertex carries the sorted set of
+//    constraints tight at it. Edges are found by the combinatorial adjacency test (p, q adjacent iff
+//    no third vertex is tight on every constraint tight at both), exact also for degenerate
+//    (cospherical, cocircular) inputs.
+//  * Every decision (signs of constraints at vertices, distance comparisons) is exact: first on
+//    interval enclosures, then, if those do not decide, in NT (exact for Q; Uncertain for intervals).
+//    So a Polytope<D, IntervalNT> that does not throw makes the same decisions as Polytope<D, Q>.
+//  * face_within(): exact decision "some point of the face {x ∈ P : constraint j tight} lies within
+//    squared distance r2 of point c", by the active-set enumeration of the KKT points.
 #include <algorithm>
 #include <array>
 #include <boost/multiprecision/gmp.hpp>
-#include <cmath>
 #include <cstddef>
 #include <optional>
+#include <type_traits>
 #include <vector>
+
+#include "exact/interval_nt.hpp"
 
 namespace kmr::wellspaced {
 
 using Q = boost::multiprecision::mpq_rational;
+using exact::IntervalNT;
+using exact::Uncertain;
 
 template <std::size_t D>
 using QPoint = std::array<Q, D>;
-
 template <std::size_t D>
-struct Halfspace {  // a·x ≤ b
-  QPoint<D> a;
-  Q b;
-};
+using IPoint = std::array<IntervalNT, D>;
 
+template <class NT>
+inline constexpr bool is_interval_v = std::is_same_v<NT, IntervalNT>;
+
+// Exact point of a double point, in NT.
+template <class NT, std::size_t D>
+std::array<NT, D> point_in(const std::array<double, D>& p) {
+  std::array<NT, D> q;
+  for (std::size_t i = 0; i < D; ++i) q[i] = NT(p[i]);
+  return q;
+}
+// p − v in NT: cells are computed relative to their site v, so that bisectors of nearby points
+// carry small, well-conditioned numbers (absolute coordinates would cancel catastrophically).
+template <class NT, std::size_t D>
+std::array<NT, D> relative_to(const std::array<double, D>& p, const std::array<double, D>& v) {
+  std::array<NT, D> q;
+  for (std::size_t i = 0; i < D; ++i) q[i] = NT(p[i]) - NT(v[i]);
+  return q;
+}
 template <std::size_t D>
-std::array<double, D> to_d(const QPoint<D>& x) {
-  std::array<double, D> d;
-  for (std::size_t i = 0; i < D; ++i) d[i] = x[i].template convert_to<double>();
-  return d;
+QPoint<D> to_q(const std::array<double, D>& p) { return point_in<Q, D>(p); }
+
+template <class NT, std::size_t D>
+IPoint<D> enclose(const std::array<NT, D>& x) {
+  IPoint<D> e;
+  for (std::size_t i = 0; i < D; ++i) e[i] = exact::enclose(x[i]);
+  return e;
 }
 
-// Floating-point filter: sign of a·x − b from double approximations of a, x, b (each within a
-// relative 2^-53 of the exact value); 0 means "too close to call, decide exactly".
-template <std::size_t D>
-int filtered_sign(const std::array<double, D>& a, const std::array<double, D>& x, double b) {
-  double s = -b, mag = std::abs(b);
-  for (std::size_t i = 0; i < D; ++i) {
-    double t = a[i] * x[i];
-    s += t;
-    mag += std::abs(t);
-  }
-  double bound = 1e-12 * mag + 1e-300;
-  return s > bound ? 1 : (s < -bound ? -1 : 0);
-}
-
-template <std::size_t D>
-Q dot(const QPoint<D>& a, const QPoint<D>& b) {
-  Q s = 0;
+template <class NT, std::size_t D>
+NT dot(const std::array<NT, D>& a, const std::array<NT, D>& b) {
+  NT s = 0;
   for (std::size_t i = 0; i < D; ++i) s += a[i] * b[i];
   return s;
 }
 
-template <std::size_t D>
-Q dist2(const QPoint<D>& a, const QPoint<D>& b) {
-  Q s = 0;
+template <class NT, std::size_t D>
+NT dist2(const std::array<NT, D>& a, const std::array<NT, D>& b) {
+  NT s = 0;
   for (std::size_t i = 0; i < D; ++i) {
-    Q d = a[i] - b[i];
+    NT d = a[i] - b[i];
     s += d * d;
   }
   return s;
 }
 
+// Sign of a quantity decided on its enclosure `approx` when possible, else by `exact()` (NT = Q)
+// or by throwing Uncertain (NT = IntervalNT).
+template <class NT, class Exact>
+int filtered_sign(const IntervalNT& approx, Exact&& exact) {
+  if (approx.lo() > 0) return 1;
+  if (approx.hi() < 0) return -1;
+  if (approx.lo() == 0 && approx.hi() == 0) return 0;
+  if constexpr (is_interval_v<NT>) throw Uncertain();
+  else return exact().sign();
+}
+
+template <std::size_t D, class NT = Q>
+struct Halfspace {  // a·x ≤ b
+  std::array<NT, D> a;
+  NT b;
+};
+
 // Bisector halfspace of v against u: points at least as close to v as to u.
-template <std::size_t D>
-Halfspace<D> bisector(const QPoint<D>& v, const QPoint<D>& u) {
-  Halfspace<D> h;
+template <std::size_t D, class NT>
+Halfspace<D, NT> bisector(const std::array<NT, D>& v, const std::array<NT, D>& u) {
+  Halfspace<D, NT> h;
   for (std::size_t i = 0; i < D; ++i) h.a[i] = u[i] - v[i];
-  h.b = (dot<D>(u, u) - dot<D>(v, v)) / 2;
+  h.b = (dot<NT, D>(u, u) - dot<NT, D>(v, v)) / NT(2);
   return h;
 }
 
-template <std::size_t D>
+template <std::size_t D, class NT = Q>
 struct Polytope {
+  using P = std::array<NT, D>;
   struct Vert {
-    QPoint<D> x;
+    P x;
     std::vector<int> tight;  // sorted constraint indices
-    std::array<double, D> xd{};  // double approximation of x (filter)
+    IPoint<D> xi{};          // enclosure of x (the filter)
   };
-  std::vector<Halfspace<D>> h;
-  std::vector<std::pair<std::array<double, D>, double>> hd;  // double approximations of h
+  struct Constraint {
+    Halfspace<D, NT> h;
+    IPoint<D> ai;  // enclosures of h.a, h.b
+    IntervalNT bi;
+  };
+  std::vector<Constraint> h;
   std::vector<Vert> v;
   unsigned version = 0;  // bumped whenever the vertex set changes
 
   // The box [lo, hi]; constraint 2i is x_i ≤ hi_i, 2i+1 is −x_i ≤ −lo_i.
-  static Polytope box(const QPoint<D>& lo, const QPoint<D>& hi) {
-    Polytope P;
+  static Polytope box(const P& lo, const P& hi) {
+    Polytope B;
     for (std::size_t i = 0; i < D; ++i) {
-      Halfspace<D> up, dn;
-      for (std::size_t j = 0; j < D; ++j) up.a[j] = dn.a[j] = 0;
-      up.a[i] = 1;
+      Halfspace<D, NT> up, dn;
+      for (std::size_t j = 0; j < D; ++j) up.a[j] = dn.a[j] = NT(0);
+      up.a[i] = NT(1);
       up.b = hi[i];
-      dn.a[i] = -1;
+      dn.a[i] = NT(-1);
       dn.b = -lo[i];
-      P.h.push_back(up);
-      P.h.push_back(dn);
-      P.hd.push_back({to_d<D>(up.a), up.b.template convert_to<double>()});
-      P.hd.push_back({to_d<D>(dn.a), dn.b.template convert_to<double>()});
+      B.add(up);
+      B.add(dn);
     }
     for (unsigned m = 0; m < (1u << D); ++m) {
       Vert c;
@@ -110,39 +142,33 @@ struct Polytope {
         c.tight.push_back(static_cast<int>(2 * i + (hiside ? 0 : 1)));
       }
       std::sort(c.tight.begin(), c.tight.end());
-      c.xd = to_d<D>(c.x);
-      P.v.push_back(std::move(c));
+      c.xi = enclose<NT, D>(c.x);
+      B.v.push_back(std::move(c));
     }
-    return P;
+    return B;
   }
 
-  Q slack(const Halfspace<D>& hs, const QPoint<D>& x) const { return dot<D>(hs.a, x) - hs.b; }
-  // Exact sign of constraint k at vertex x (filtered).
-  int sign_at(std::size_t k, const Vert& x) const {
-    int f = filtered_sign<D>(hd[k].first, x.xd, hd[k].second);
-    return f ? f : slack(h[k], x.x).sign();
+  NT slack(const Halfspace<D, NT>& hs, const P& x) const { return dot<NT, D>(hs.a, x) - hs.b; }
+  // Exact sign of a·x − b for constraint k at a point with enclosure xi.
+  int sign_at(std::size_t k, const P& x, const IPoint<D>& xi) const {
+    const Constraint& c = h[k];
+    return filtered_sign<NT>(dot<IntervalNT, D>(c.ai, xi) - c.bi, [&] { return slack(c.h, x); });
+  }
+  // Exact sign of |x − c|² − r2.
+  static int compare_dist2(const P& x, const IPoint<D>& xi, const P& c, const IPoint<D>& ci, const NT& r2,
+                           const IntervalNT& r2i) {
+    return filtered_sign<NT>(dist2<IntervalNT, D>(xi, ci) - r2i, [&] { return dist2<NT, D>(x, c) - r2; });
   }
 
   // Adds constraint hs (index = h.size() before the call) and clips. Returns its index.
-  int clip(const Halfspace<D>& hs) {
-    int j = static_cast<int>(h.size());
-    h.push_back(hs);
-    hd.push_back({to_d<D>(hs.a), hs.b.template convert_to<double>()});
-    std::vector<Q> s(v.size());
-    std::vector<char> have(v.size(), 0);
+  int clip(const Halfspace<D, NT>& hs) {
+    int j = add(hs);
     std::vector<int> sg(v.size());
     bool any_out = false;
     for (std::size_t k = 0; k < v.size(); ++k) {
-      sg[k] = sign_at(static_cast<std::size_t>(j), v[k]);
+      sg[k] = sign_at(static_cast<std::size_t>(j), v[k].x, v[k].xi);
       any_out |= sg[k] > 0;
     }
-    auto exact_s = [&](std::size_t k) -> const Q& {
-      if (!have[k]) {
-        s[k] = slack(hs, v[k].x);
-        have[k] = 1;
-      }
-      return s[k];
-    };
     if (!any_out) {
       for (std::size_t k = 0; k < v.size(); ++k)
         if (sg[k] == 0) v[k].tight.push_back(j);
@@ -150,11 +176,12 @@ struct Polytope {
     }
     ++version;
     std::vector<Vert> out;
+    std::vector<int> common;
     for (std::size_t p = 0; p < v.size(); ++p) {
       if (sg[p] >= 0) continue;
       for (std::size_t q = 0; q < v.size(); ++q) {
         if (sg[q] <= 0) continue;
-        std::vector<int> common;
+        common.clear();
         std::set_intersection(v[p].tight.begin(), v[p].tight.end(), v[q].tight.begin(), v[q].tight.end(),
                               std::back_inserter(common));
         if (common.size() + 1 < D) continue;
@@ -165,10 +192,11 @@ struct Polytope {
         }
         if (!adjacent) continue;
         Vert nv;
-        Q lam = exact_s(p) / (exact_s(p) - exact_s(q));
+        NT sp = slack(hs, v[p].x), sq = slack(hs, v[q].x);
+        NT lam = sp / (sp - sq);
         for (std::size_t i = 0; i < D; ++i) nv.x[i] = v[p].x[i] + (v[q].x[i] - v[p].x[i]) * lam;
-        nv.xd = to_d<D>(nv.x);
-        nv.tight = std::move(common);
+        nv.xi = enclose<NT, D>(nv.x);
+        nv.tight = common;
         nv.tight.push_back(j);
         out.push_back(std::move(nv));
       }
@@ -182,70 +210,59 @@ struct Polytope {
     return j;
   }
 
-  bool contains(const QPoint<D>& x) const {
-    auto xd = to_d<D>(x);
-    for (std::size_t k = 0; k < h.size(); ++k) {
-      int f = filtered_sign<D>(hd[k].first, xd, hd[k].second);
-      if (f > 0 || (f == 0 && slack(h[k], x) > 0)) return false;
-    }
+  bool contains(const P& x) const {
+    IPoint<D> xi = enclose<NT, D>(x);
+    for (std::size_t k = 0; k < h.size(); ++k)
+      if (sign_at(k, x, xi) > 0) return false;
     return true;
   }
-  // Approximate max squared distance from c over the vertices (for pruning only).
-  double max_dist2_approx(const std::array<double, D>& c) const {
+  // An upper bound on the max squared distance from c over the vertices (rigorous; for pruning).
+  double max_dist2_upper(const IPoint<D>& ci) const {
     double m = 0;
-    for (const auto& x : v) {
-      double d = 0;
-      for (std::size_t i = 0; i < D; ++i) d += (x.xd[i] - c[i]) * (x.xd[i] - c[i]);
-      m = std::max(m, d);
-    }
+    for (const auto& x : v) m = std::max(m, dist2<IntervalNT, D>(x.xi, ci).hi());
     return m;
   }
-  // Exact: is some vertex farther than sqrt(r2) from c? (filtered)
-  bool some_vertex_beyond(const QPoint<D>& c, const Q& r2) const {
-    auto cd = to_d<D>(c);
-    double rd = r2.template convert_to<double>();
-    for (const auto& x : v) {
-      double d = 0;
-      for (std::size_t i = 0; i < D; ++i) d += (x.xd[i] - cd[i]) * (x.xd[i] - cd[i]);
-      if (d > rd * (1 + 1e-9)) return true;
-      if (d >= rd * (1 - 1e-9) && dist2<D>(x.x, c) > r2) return true;
-    }
+  // Is some vertex farther than sqrt(r2) from c?
+  bool some_vertex_beyond(const P& c, const NT& r2) const {
+    IPoint<D> ci = enclose<NT, D>(c);
+    IntervalNT r2i = exact::enclose(r2);
+    for (const auto& x : v)
+      if (compare_dist2(x.x, x.xi, c, ci, r2, r2i) > 0) return true;
     return false;
   }
-
   // Max squared distance from c over the vertices.
-  Q max_dist2(const QPoint<D>& c) const {
-    Q m = 0;
+  NT max_dist2(const P& c) const {
+    NT m = 0;
     for (const auto& x : v) {
-      Q d = dist2<D>(x.x, c);
+      NT d = dist2<NT, D>(x.x, c);
       if (d > m) m = d;
     }
     return m;
   }
 
   // Projection of c onto {x : h_k·x = b_k for k in rows}; nullopt if the rows are dependent.
-  std::optional<QPoint<D>> project(const QPoint<D>& c, const std::vector<int>& rows) const {
+  std::optional<P> project(const P& c, const std::vector<int>& rows) const {
     std::size_t m = rows.size();
-    std::vector<std::vector<Q>> G(m, std::vector<Q>(m + 1));
+    std::vector<std::vector<NT>> G(m, std::vector<NT>(m + 1));
     for (std::size_t i = 0; i < m; ++i) {
-      for (std::size_t k = 0; k < m; ++k) G[i][k] = dot<D>(h[rows[i]].a, h[rows[k]].a);
-      G[i][m] = dot<D>(h[rows[i]].a, c) - h[rows[i]].b;
+      for (std::size_t k = 0; k < m; ++k) G[i][k] = dot<NT, D>(h[rows[i]].h.a, h[rows[k]].h.a);
+      G[i][m] = slack(h[rows[i]].h, c);
     }
     for (std::size_t col = 0; col < m; ++col) {
       std::size_t piv = col;
-      while (piv < m && G[piv][col] == 0) ++piv;
+      while (piv < m && G[piv][col] == NT(0)) ++piv;
       if (piv == m) return std::nullopt;
       std::swap(G[piv], G[col]);
       for (std::size_t r = 0; r < m; ++r) {
-        if (r == col || G[r][col] == 0) continue;
-        Q f = G[r][col] / G[col][col];
+        if (r == col) continue;
+        NT f = G[r][col] / G[col][col];
         for (std::size_t k = col; k <= m; ++k) G[r][k] -= f * G[col][k];
       }
     }
-    QPoint<D> x = c;
+    P x = c;
     for (std::size_t i = 0; i < m; ++i) {
-      Q lam = G[i][m] / G[i][i];
-      for (std::size_t d = 0; d < D; ++d) x[d] -= lam * h[rows[i]].a[d];
+      NT lam = G[i][m] / G[i][i];
+      for (std::size_t d = 0; d < D; ++d) x[d] -= lam * h[rows[i]].h.a[d];
     }
     return x;
   }
@@ -254,18 +271,15 @@ struct Polytope {
   // distance r2 of c? (Minimum of |x−c|² over F_j is the projection of c onto the affine hull of
   // the minimal face containing the minimiser; enumerate those affine hulls.) `skip_from`:
   // constraints with index < skip_from (the bounding box) are never active at a minimiser within r2.
-  bool face_within(int j, const QPoint<D>& c, const Q& r2, int skip_from) const {
+  bool face_within(int j, const P& c, const NT& r2, int skip_from) const {
     std::vector<int> rel;  // constraints tight at some vertex of F_j
     bool nonempty = false;
-    auto cd = to_d<D>(c);
-    double rd = r2.template convert_to<double>();
+    IPoint<D> ci = enclose<NT, D>(c);
+    IntervalNT r2i = exact::enclose(r2);
     for (const auto& x : v) {
       if (!std::binary_search(x.tight.begin(), x.tight.end(), j)) continue;
       nonempty = true;
-      double dd = 0;
-      for (std::size_t i = 0; i < D; ++i) dd += (x.xd[i] - cd[i]) * (x.xd[i] - cd[i]);
-      if (dd < rd * (1 - 1e-9)) return true;
-      if (dd <= rd * (1 + 1e-9) && dist2<D>(x.x, c) <= r2) return true;
+      if (compare_dist2(x.x, x.xi, c, ci, r2, r2i) <= 0) return true;
       for (int t : x.tight)
         if (t != j && t >= skip_from) rel.push_back(t);
     }
@@ -278,7 +292,8 @@ struct Polytope {
     auto rec = [&](auto&& self, std::size_t start) -> void {
       if (found) return;
       if (auto x = project(c, rows)) {
-        if (dist2<D>(*x, c) <= r2 && contains(*x)) {
+        IPoint<D> xi = enclose<NT, D>(*x);
+        if (compare_dist2(*x, xi, c, ci, r2, r2i) <= 0 && contains(*x)) {
           found = true;
           return;
         }
@@ -295,13 +310,13 @@ struct Polytope {
     rec(rec, 0);
     return found;
   }
-};
 
-template <std::size_t D>
-QPoint<D> to_q(const std::array<double, D>& p) {
-  QPoint<D> q;
-  for (std::size_t i = 0; i < D; ++i) q[i] = Q(p[i]);
-  return q;
-}
+ private:
+  int add(const Halfspace<D, NT>& hs) {
+    Constraint c{hs, enclose<NT, D>(hs.a), exact::enclose(hs.b)};
+    h.push_back(std::move(c));
+    return static_cast<int>(h.size()) - 1;
+  }
+};
 
 }  // namespace kmr::wellspaced

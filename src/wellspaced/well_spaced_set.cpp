@@ -77,7 +77,6 @@ struct WellSpacedSet<D>::Impl {
     std::vector<Pt> steiners;       // Steiner vertices inserted (edges op → square of w)
   };
   struct Vtx {
-    QPoint<D> q;
     bool steiner = false;
     Time created;
     K leaf;
@@ -99,6 +98,7 @@ struct WellSpacedSet<D>::Impl {
   std::unordered_map<K, std::set<OpKey>, KeyHash<D>> readers;
   std::set<OpKey> pending;
   std::map<int, Q> rho_pow2;  // ρ^{2r}
+  std::map<int, IntervalNT> rho_pow2_i;  // enclosures of ρ^{2r}
   std::map<int, int> ell_exp; // ℓ(r) = 2^{ell_exp}
   Stats stats;
   UpdateStats* upd = nullptr;
@@ -130,6 +130,23 @@ struct WellSpacedSet<D>::Impl {
     while (rpow(r + 1) <= d2) ++r;
     while (rpow(r) > d2) --r;
     return r;
+  }
+  // ⌊log_ρ |ab|⌋, exactly: decided on intervals when they suffice, else in rationals.
+  int rank_between(const Pt& a, const Pt& b) {
+    IntervalNT d2 = dist2<IntervalNT, D>(point_in<IntervalNT, D>(a), point_in<IntervalNT, D>(b));
+    try {
+      int r = static_cast<int>(std::floor(std::log(d2.approx()) / (2 * std::log(params.rho))));
+      while (rpow_i(r + 1) <= d2) ++r;
+      while (rpow_i(r) > d2) --r;
+      return r;
+    } catch (const Uncertain&) {
+      return rank_of(dist2<Q, D>(to_q<D>(a), to_q<D>(b)));
+    }
+  }
+  const IntervalNT& rpow_i(int r) {
+    auto it = rho_pow2_i.find(r);
+    if (it != rho_pow2_i.end()) return it->second;
+    return rho_pow2_i.emplace(r, exact::enclose(rpow(r))).first->second;
   }
   // ℓ(r): the largest power of two 2^e with 2^{2e}·D < ρ^{2r} (so ℓ(r) < ρ^r/√D).
   int ell(int r) {
@@ -202,10 +219,10 @@ struct WellSpacedSet<D>::Impl {
     if (bv->second.empty()) ops_by_vertex.erase(bv);
     ops.erase(it);
   }
-  // Enqueue(w, flag, nn, v_(t)): nn given squared.
-  void enqueue(const Pt& w, int type, const Q& nn2, const OpKey& from, Op& fromop) {
+  // Enqueue(w, flag, nn, v_(t)), with nn given by its rank ⌊log_ρ nn⌋.
+  void enqueue(const Pt& w, int type, int rank, const OpKey& from, Op& fromop) {
     Time tw;
-    tw.rank = rank_of(nn2);
+    tw.rank = rank;
     tw.type = type;
     tw.color = type ? color(w, tw.rank) : 0;
     if (!(tw > from.t)) return;
@@ -227,130 +244,190 @@ struct WellSpacedSet<D>::Impl {
   }
 
   // ---------- QTClippedVoronoi (§3.2.4) ----------
+  // Every geometric decision below is made by a two-tier filter (spec/wellspaced.md, "Exactness"):
+  // the tier templated on NT = IntervalNT runs first and throws Uncertain when some decision is too
+  // close to call; the call is then redone with NT = Q. Both tiers make the same decisions, so the
+  // results do not depend on which tier answered. Doubles only order work and prune it rigorously.
   struct CVResult {
-    std::vector<K> reads;
-    std::vector<std::pair<Pt, Q>> cv;  // neighbour, squared distance
-    Q nn2;
+    std::vector<K> reads;  // squares read, sorted
+    Pt nn{};               // a nearest visible vertex (the lexicographically least on ties)
+    std::vector<Pt> cv;    // β-clipped Voronoi neighbours, sorted
   };
-  static double box_dist2(const Pt& v, const K& s) {
-    double h = s.side(), d = 0;
+  // Enclosure of square s = [k·2^-L, (k+1)·2^-L) per axis (endpoints widened when not doubles).
+  static std::array<std::pair<IntervalNT, IntervalNT>, D> square_bounds(const K& s) {
+    std::array<std::pair<IntervalNT, IntervalNT>, D> b;
     for (std::size_t i = 0; i < D; ++i) {
-      double lo = double(s.k[i]) * h, hi = lo + h, x = 0;
-      if (v[i] < lo) x = lo - v[i];
-      else if (v[i] > hi) x = v[i] - hi;
-      d += x * x;
+      auto at = [&](std::uint64_t k) {
+        double x = std::ldexp(static_cast<double>(k), -s.level);
+        if (static_cast<std::uint64_t>(static_cast<double>(k)) == k) return IntervalNT(x);
+        return IntervalNT::hull(std::nextafter(x, -1.0), std::nextafter(x, 2.0));
+      };
+      b[i] = {at(s.k[i]), at(s.k[i] + 1)};
     }
-    return d;
+    return b;
   }
-  // QTClippedVoronoi (Fig. 3.6). Phase 1 scans squares in Euclidean order until NN(v) is known
-  // exactly. Phase 2 maintains C = Vor_seen(v) ∩ box(v, R), R ≥ β·NN, and reads a square only if it
+  // max(0, lo − c, c − hi) as an interval: the distance along one axis from c to [lo, hi].
+  static IntervalNT axis_gap(const IntervalNT& c, const IntervalNT& lo, const IntervalNT& hi) {
+    IntervalNT a = lo - c, b = c - hi;
+    return IntervalNT::hull(std::max({0.0, a.lo(), b.lo()}), std::max({0.0, a.hi(), b.hi()}));
+  }
+  // A lower bound on the squared distance from v to square s (orders the scan; prunes it). Above
+  // level 52 the corners k·2^-L are exact doubles, so each gap has one rounding and the sum of D ≤ 4
+  // squares has relative error < (D+3)·2^-53 < 2^-48; deeper squares go through intervals.
+  static double box_dist2_lower(const Pt& v, const IPoint<D>& vi, const K& s) {
+    if (s.level <= 52) {
+      double h = std::ldexp(1.0, -s.level), d = 0;
+      for (std::size_t i = 0; i < D; ++i) {
+        double lo = static_cast<double>(s.k[i]) * h, hi = lo + h, g = 0;
+        if (v[i] < lo) g = lo - v[i];
+        else if (v[i] > hi) g = v[i] - hi;
+        d += g * g;
+      }
+      return d * (1 - 0x1p-48);
+    }
+    auto b = square_bounds(s);
+    IntervalNT d = 0;
+    for (std::size_t i = 0; i < D; ++i) {
+      IntervalNT g = axis_gap(vi[i], b[i].first, b[i].second);
+      d += g * g;
+    }
+    return d.lo();
+  }
+  // Exact: does square s meet B(c, |cv|) for some vertex c of C (the certificate region of C)?
+  // `radii` holds the enclosures of |cv|² for the vertices c of C, in order.
+  template <class NT>
+  // C is relative to its site v, which sits at the origin.
+  static bool meets_certificate_region(const Polytope<D, NT>& C, const std::vector<IntervalNT>& radii, const Pt& v,
+                                       const K& s) {
+    auto b = square_bounds(s);
+    for (std::size_t i = 0; i < D; ++i) {
+      b[i].first -= IntervalNT(v[i]);
+      b[i].second -= IntervalNT(v[i]);
+    }
+    for (std::size_t j = 0; j < C.v.size(); ++j) {
+      const auto& c = C.v[j];
+      IntervalNT gap = 0;
+      for (std::size_t i = 0; i < D; ++i) {
+        IntervalNT g = axis_gap(c.xi[i], b[i].first, b[i].second);
+        if (g.hi() > 0) gap += g * g;
+      }
+      if (gap.hi() < radii[j].lo()) return true;  // the common case, decided without rounding
+      int sg = filtered_sign<NT>(gap - radii[j], [&] {
+        NT side = NT(1);
+        for (int l = 0; l < s.level; ++l) side /= NT(2);
+        NT g2 = 0;
+        for (std::size_t i = 0; i < D; ++i) {
+          NT lo = NT(static_cast<double>(s.k[i] >> 26)) * NT(double(1 << 26)) + NT(static_cast<double>(s.k[i] & ((1u << 26) - 1)));
+          lo = lo * side - NT(v[i]);
+          NT hi = lo + side, g = 0;
+          if (c.x[i] < lo) g = lo - c.x[i];
+          else if (c.x[i] > hi) g = c.x[i] - hi;
+          g2 += g * g;
+        }
+        return g2 - dot<NT, D>(c.x, c.x);
+      });
+      if (sg <= 0) return true;
+    }
+    return false;
+  }
+
+  // QTClippedVoronoi (Fig. 3.6), one tier. Phase 1 scans squares in Euclidean order until NN(v) is
+  // known. Phase 2 maintains C = Vor_seen(v) ∩ box(v, R), R ≥ β·NN, and reads a square only if it
   // meets the certificate region of C — the union of the balls B(c, |cv|) over the vertices c of C
-  // (a linear-in-c test, so vertices suffice) — which can only shrink as vertices are seen. Unseen
-  // vertices then lie outside every certificate ball, so C ∩ B(v, β·NN) = Vor_M(v) ∩ B(v, β·NN);
-  // the β-clipped neighbours are decided exactly on C. Reads vertices created before t only.
-  CVResult clipped_voronoi_neighbors(const Pt& v, const Time& t) {
+  // (|c−p|² − |c−v|² is linear in c, so vertices suffice) — which only shrinks as vertices are
+  // seen. Unseen vertices then lie outside every certificate ball, so C ∩ B(v, β·NN) =
+  // Vor_M(v) ∩ B(v, β·NN); the β-clipped neighbours are decided exactly on C. Reads vertices
+  // created before t only.
+  template <class NT>
+  CVResult clipped_voronoi_tier(const Pt& v, const Time& t) {
+    using NPt = std::array<NT, D>;
     CVResult res;
-    const QPoint<D>& vq = vtx.at(v).q;
+    const NPt vq{};  // the cell is computed relative to v
+    const IPoint<D> vi{};
+    const IPoint<D> vabs = point_in<IntervalNT, D>(v);
+    auto rel = [&](const Pt& u) { return relative_to<NT, D>(u, v); };
     using QE = std::pair<double, K>;
     std::priority_queue<QE, std::vector<QE>, std::greater<QE>> heap;
     std::unordered_set<K, KeyHash<D>> seen;
     K start = vtx.at(v).leaf;
     heap.push({0.0, start});
     seen.insert(start);
-    std::vector<std::pair<double, Pt>> cand;  // approximate squared distance, vertex
-    std::vector<K> late;                      // squares popped after NN was fixed
-    double best = std::numeric_limits<double>::infinity();
+    struct Cand {
+      double approx;   // |uv|² rounded (the clipping order)
+      IntervalNT d;    // |uv|² enclosed
+      Pt u;
+    };
+    std::vector<Cand> cand;
+    std::vector<K> late;  // squares popped after NN was fixed
+    double best = std::numeric_limits<double>::infinity();  // upper bound on NN²
     bool nn_fixed = false;
     double limit = std::numeric_limits<double>::infinity();
-    const double slack = 1 + 1e-9;
-    std::optional<Polytope<D>> P;
-    std::vector<int> cidx;  // constraint index of cand[i] in P (−1: bisector misses P)
-    double maxd = 0;
-    const auto vd0 = to_d<D>(vq);
-    unsigned cache_version = ~0u;
-    std::vector<std::pair<Pt, double>> vd;  // vertices of C in doubles, |cv|²
+    std::optional<Polytope<D, NT>> C;
+    std::vector<int> cidx;  // constraint index of cand[i] in C (−1: its bisector misses C)
+    double maxd = 0;        // upper bound on max_{c ∈ C} |cv|²
     auto clip_from = [&](std::size_t i0) {
       for (std::size_t i = i0; i < cand.size(); ++i) {
-        // the bisector misses C if |vu|/2 > max_{c∈C}|vc| (pruning only: clipping is always safe)
-        if (cand[i].first > 4 * maxd * (1 + 1e-6)) {
+        // |uv|/2 > max_c |cv| means the bisector of v, u misses C
+        if (cand[i].d.lo() > 4 * maxd) {
           cidx.push_back(-1);
           continue;
         }
-        unsigned ver = P->version;
-        cidx.push_back(P->clip(bisector<D>(vq, vtx.at(cand[i].second).q)));
-        if (P->version != ver) maxd = P->max_dist2_approx(vd0);
+        unsigned ver = C->version;
+        cidx.push_back(C->clip(bisector<D, NT>(vq, rel(cand[i].u))));
+        if (C->version != ver) maxd = C->max_dist2_upper(vi);
       }
-      limit = 4 * maxd * slack;
+      limit = 4 * maxd;  // a point of a certificate ball B(c, |cv|) is within 2|cv| of v
     };
     auto fix_nn = [&]() {
-      res.nn2 = -1;  // exact minimum among the candidates near the approximate minimum
-      for (auto& [d, u] : cand)
-        if (d <= best * (1 + 1e-9)) {
-          Q e = dist2<D>(vtx.at(u).q, vq);
-          if (res.nn2 < 0 || e < res.nn2) res.nn2 = e;
+      NT nn2 = -1;
+      bool have = false;
+      for (const Cand& c : cand)
+        if (c.d.lo() <= best) {
+          NT e = dist2<NT, D>(rel(c.u), vq);
+          if (!have || e < nn2 || (e == nn2 && c.u < res.nn)) {
+            nn2 = e;
+            res.nn = c.u;
+            have = true;
+          }
         }
       nn_fixed = true;
-      // box half-width R ≥ β·NN: β·NN rounded up to 8 significant bits (exactly checked)
-      Q r2 = beta2 * res.nn2;
-      double bn = params.beta * std::sqrt(res.nn2.template convert_to<double>());
+      // box half-width R ≥ β·NN: β·NN rounded up to 8 significant bits, from doubles of the chosen
+      // nearest vertex (so R is the same in both tiers), checked exactly
+      NT r2 = sq<NT>(params.beta) * nn2;
+      double nd = 0;
+      for (std::size_t i = 0; i < D; ++i) nd += (res.nn[i] - v[i]) * (res.nn[i] - v[i]);
+      double bn = params.beta * std::sqrt(nd);
       int e = static_cast<int>(std::ceil(std::log2(bn))) - 8;
-      Q R(std::ldexp(std::ceil(std::ldexp(bn, -e)), e));
-      Q step(std::ldexp(1.0, e));
-      while (R * R < r2) R += step;
-      QPoint<D> lo, hi;
+      double R = std::ldexp(std::ceil(std::ldexp(bn, -e)), e);
+      while (NT(R) * NT(R) < r2) R += std::ldexp(1.0, e);
+      NPt lo, hi;
       for (std::size_t i = 0; i < D; ++i) {
-        lo[i] = vq[i] - R;
-        hi[i] = vq[i] + R;
+        lo[i] = NT(-R);
+        hi[i] = NT(R);
       }
-      P = Polytope<D>::box(lo, hi);
-      maxd = P->max_dist2_approx(vd0);
-      std::sort(cand.begin(), cand.end());
+      C = Polytope<D, NT>::box(lo, hi);
+      maxd = C->max_dist2_upper(vi);
+      std::sort(cand.begin(), cand.end(), [](const Cand& a, const Cand& b) {
+        return a.approx != b.approx ? a.approx < b.approx : a.u < b.u;
+      });
       clip_from(0);
     };
-    // does square s meet the certificate region of C? (double filter, exact fallback)
-    auto meets_certificate_region = [&](const K& s) {
-      if (cache_version != P->version) {
-        vd.clear();
-        for (const auto& c : P->v) {
-          Pt cd;
-          for (std::size_t i = 0; i < D; ++i) cd[i] = c.x[i].template convert_to<double>();
-          vd.emplace_back(cd, dist2<D>(c.x, vq).template convert_to<double>());
-        }
-        cache_version = P->version;
+    std::vector<IntervalNT> radii;  // |cv|² for the vertices c of C
+    unsigned radii_version = ~0u;
+    auto meets = [&](const K& s) {
+      if (radii_version != C->version || radii.size() != C->v.size()) {
+        radii.clear();
+        for (const auto& c : C->v) radii.push_back(dist2<IntervalNT, D>(c.xi, vi));
+        radii_version = C->version;
       }
-      double h = s.side();
-      for (std::size_t j = 0; j < vd.size(); ++j) {
-        double d = 0;
-        for (std::size_t i = 0; i < D; ++i) {
-          double lo = double(s.k[i]) * h, hi = lo + h, c = vd[j].first[i], x = 0;
-          if (c < lo) x = lo - c;
-          else if (c > hi) x = c - hi;
-          d += x * x;
-        }
-        double r = vd[j].second;
-        if (d <= r * (1 - 1e-9)) return true;
-        if (d <= r * (1 + 1e-9)) {  // too close to call in doubles: exact
-          const auto& c = P->v[j].x;
-          Q hq = Q(1);
-          for (int l = 0; l < s.level; ++l) hq /= 2;
-          Q dq = 0;
-          for (std::size_t i = 0; i < D; ++i) {
-            Q lo = Q(static_cast<long long>(s.k[i])) * hq, hi = lo + hq, x = 0;
-            if (c[i] < lo) x = lo - c[i];
-            else if (c[i] > hi) x = c[i] - hi;
-            dq += x * x;
-          }
-          if (dq <= dist2<D>(c, vq)) return true;
-        }
-      }
-      return false;
+      return meets_certificate_region<NT>(*C, radii, v, s);
     };
     while (!heap.empty()) {
       auto [key, s] = heap.top();
-      if (!nn_fixed && key > best * slack) fix_nn();
+      if (!nn_fixed && key > best) fix_nn();
       if (nn_fixed && key > limit) break;
       heap.pop();
-      if (nn_fixed && !(s == start) && !meets_certificate_region(s)) continue;
+      if (nn_fixed && !(s == start) && !meets(s)) continue;
       if (nn_fixed) late.push_back(s);
       else res.reads.push_back(s);
       std::size_t before = cand.size();
@@ -361,15 +438,14 @@ struct WellSpacedSet<D>::Impl {
           if (!(u == v) && vtx.at(u).created < t) here.push_back(u);
         std::sort(here.begin(), here.end());
         for (const Pt& u : here) {
-          double d = 0;
-          for (std::size_t i = 0; i < D; ++i) d += (u[i] - v[i]) * (u[i] - v[i]);
-          cand.emplace_back(d, u);
-          best = std::min(best, d);
+          IntervalNT d = dist2<IntervalNT, D>(point_in<IntervalNT, D>(u), vabs);
+          cand.push_back({d.approx(), d, u});
+          best = std::min(best, d.hi());
         }
       }
       if (nn_fixed && cand.size() > before) clip_from(before);
       for (const K& n : tree.adjacent_leaves(s))
-        if (seen.insert(n).second) heap.push({box_dist2(v, n), n});
+        if (seen.insert(n).second) heap.push({box_dist2_lower(v, vabs, n), n});
     }
     KMR_CHECK(!cand.empty(), "clipped Voronoi scan found no vertex");
     if (!nn_fixed) fix_nn();
@@ -377,17 +453,30 @@ struct WellSpacedSet<D>::Impl {
     // FINAL cell: a function of the data, not of the order in which squares were popped (squares
     // popped earlier against a larger region hold only vertices that cannot affect the result).
     for (const K& s : late)
-      if (meets_certificate_region(s)) res.reads.push_back(s);
+      if (meets(s)) res.reads.push_back(s);
     std::sort(res.reads.begin(), res.reads.end());
     // exact decision: u ∈ CV iff the face of C on the bisector of v, u has a point within β·NN
-    Q r2 = beta2 * res.nn2;
-    const double r2d = r2.template convert_to<double>();
+    NT r2 = sq<NT>(params.beta) * dist2<NT, D>(rel(res.nn), vq);
+    const double r2_hi = exact::enclose(r2).hi();
     for (std::size_t i = 0; i < cand.size(); ++i) {
-      if (cidx[i] < 0 || cand[i].first > 4 * r2d * (1 + 1e-6)) continue;  // pruning only
-      if (P->face_within(cidx[i], vq, r2, 2 * static_cast<int>(D)))
-        res.cv.emplace_back(cand[i].second, dist2<D>(vtx.at(cand[i].second).q, vq));
+      if (cidx[i] < 0 || cand[i].d.lo() > 4 * r2_hi) continue;  // the face is beyond β·NN
+      if (C->face_within(cidx[i], vq, r2, 2 * static_cast<int>(D))) res.cv.push_back(cand[i].u);
     }
-    std::sort(res.cv.begin(), res.cv.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::sort(res.cv.begin(), res.cv.end());
+    return res;
+  }
+  template <class NT>
+  static NT sq(double x) { return NT(x) * NT(x); }
+
+  CVResult clipped_voronoi_neighbors(const Pt& v, const Time& t) {
+    CVResult res;
+    try {
+      if (params.exact_only) throw Uncertain();
+      res = clipped_voronoi_tier<IntervalNT>(v, t);
+    } catch (const Uncertain&) {
+      stats.exact_fallbacks++;
+      res = clipped_voronoi_tier<Q>(v, t);
+    }
     if (upd) {
       upd->cv_calls++;
       upd->cv_squares_total += res.reads.size();
@@ -403,75 +492,131 @@ struct WellSpacedSet<D>::Impl {
   void dispatch(const OpKey& k, Op& op) {
     CVResult cv = clipped_voronoi_neighbors(k.v, k.t);
     op.reads = cv.reads;
-    enqueue(k.v, 1, cv.nn2, k, op);
-    for (auto& [w, d2] : cv.cv) enqueue(w, 1, d2, k, op);
+    enqueue(k.v, 1, rank_between(k.v, cv.nn), k, op);
+    for (const Pt& w : cv.cv) enqueue(w, 1, rank_between(k.v, w), k, op);
     stats.dispatches++;
   }
 
-  // Pick w ∈ Vor^{(ρ,β)}(v): on the segment from v to the farthest vertex x* of the cell, at a
-  // squared distance between ρ²NN² and min(β²NN², |vx*|²), rounded to doubles, verified exactly.
-  // Deterministic: depends only on v, NN(v) and the clipped cell.
-  Pt pick(const QPoint<D>& vq, const Pt& v, const Q& nn2, const Polytope<D>& P) {
-    const QPoint<D>* far = nullptr;
-    Q fd = -1;
+  // Pick w ∈ Vor^{(ρ,β)}(v): toward the farthest vertex x* of the cell, at a squared distance
+  // between ρ²NN² and min(β²NN², |vx*|²), rounded to doubles, verified exactly. The direction is
+  // x* truncated to a grid of spacing 2^{ℓ(r)−16} relative to v (r = rank of NN), so it is a
+  // function of v, NN and the cell only — the same in both tiers.
+  template <class NT>
+  Pt pick(const std::array<NT, D>& vq, const Pt& v, const Pt& nn, const NT& nn2, const Polytope<D, NT>& P) {
+    const typename Polytope<D, NT>::Vert* far = nullptr;
+    NT fd = -1;
     for (const auto& x : P.v) {
-      Q d = dist2<D>(x.x, vq);
-      if (d > fd || (d == fd && x.x < *far)) {
+      NT d = dist2<NT, D>(x.x, vq);
+      if (d > fd || (d == fd && x.x < far->x)) {
         fd = d;
-        far = &x.x;
+        far = &x;
       }
     }
-    Q lo2 = rho2 * nn2, bmax = beta2 * nn2;
-    Q hi2 = fd < bmax ? fd : bmax;
-    double l = lo2.template convert_to<double>(), h = hi2.template convert_to<double>(), F = fd.template convert_to<double>();
+    const int e = ell(rank_between(v, nn)) - 16;
     Pt xs;
-    for (std::size_t i = 0; i < D; ++i) xs[i] = (*far)[i].template convert_to<double>();
+    for (std::size_t i = 0; i < D; ++i) {
+      const NT& off = far->x[i];  // P is relative to v
+      double steps = floor_div_pow2<NT>(off, e);
+      xs[i] = v[i] + std::ldexp(std::clamp(steps, -0x1p50, 0x1p50), e);
+    }
+    double n2 = 0, F = 0;
+    for (std::size_t i = 0; i < D; ++i) {
+      n2 += (nn[i] - v[i]) * (nn[i] - v[i]);
+      F += (xs[i] - v[i]) * (xs[i] - v[i]);
+    }
+    const NT lo2 = sq<NT>(params.rho) * nn2, bmax = sq<NT>(params.beta) * nn2;
+    const double l = params.rho * params.rho * n2, h = std::min(params.beta * params.beta * n2, F);
     const double fr[] = {0.5, 0.25, 0.75, 0.125, 0.875, 0.375, 0.625, 0.0625, 0.9375, 0.03125};
     for (double f : fr) {
-      double T = l + f * (h - l);
-      double lam = std::sqrt(T / F);
+      if (!(F > 0)) break;
+      double lam = std::sqrt((l + f * (h - l)) / F);
       Pt w;
       for (std::size_t i = 0; i < D; ++i) w[i] = std::clamp(v[i] + lam * (xs[i] - v[i]), 0.0, 1.0);
-      QPoint<D> wq = to_q<D>(w);
-      Q d = dist2<D>(wq, vq);
+      auto wq = relative_to<NT, D>(w, v);
+      NT d = dist2<NT, D>(wq, vq);
       if (d < lo2 || !(d < bmax)) continue;
       if (!P.contains(wq)) continue;
       return w;
     }
+    if constexpr (is_interval_v<NT>) throw Uncertain();  // let the exact tier report it
     throw ContractError("no double-precision point found in the picking region (degenerate cell)");
+  }
+  // ⌊x / 2^e⌋ as a double (exact for |x / 2^e| ≤ 2^52; larger values are clamped by the caller).
+  template <class NT>
+  static double floor_div_pow2(const NT& x, int e) {
+    if constexpr (is_interval_v<NT>) {
+      double a = std::floor(std::ldexp(x.lo(), -e)), b = std::floor(std::ldexp(x.hi(), -e));
+      if (a != b || std::fabs(a) > 0x1p52) {
+        if (std::min(a, b) > 0x1p51) return 0x1p51;
+        if (std::max(a, b) < -0x1p51) return -0x1p51;
+        throw Uncertain();
+      }
+      return a;
+    } else {
+      Q y = x;
+      if (e < 0) mpz_mul_2exp(mpq_numref(y.backend().data()), mpq_numref(y.backend().data()), static_cast<unsigned>(-e));
+      else mpz_mul_2exp(mpq_denref(y.backend().data()), mpq_denref(y.backend().data()), static_cast<unsigned>(e));
+      mpq_canonicalize(y.backend().data());
+      mpz_t f;
+      mpz_init(f);
+      mpz_fdiv_q(f, mpq_numref(y.backend().data()), mpq_denref(y.backend().data()));
+      double r;
+      if (mpz_cmp_d(f, 0x1p51) > 0) r = 0x1p51;
+      else if (mpz_cmp_d(f, -0x1p51) < 0) r = -0x1p51;
+      else r = mpz_get_d(f);
+      mpz_clear(f);
+      return r;
+    }
+  }
+
+  // The Steiner vertices a fill on v inserts, in order: while Vor_CV(v) ∩ [0,1]^D is not inside
+  // the ball of radius ρ·NN, pick a point of the picking region and cut the cell by its bisector.
+  template <class NT>
+  std::vector<Pt> fill_tier(const Pt& v, const CVResult& cv) {
+    const std::array<NT, D> vq{};  // the cell is computed relative to v
+    auto rel = [&](const Pt& u) { return relative_to<NT, D>(u, v); };
+    std::array<NT, D> lo, hi;
+    for (std::size_t i = 0; i < D; ++i) {
+      lo[i] = NT(0) - NT(v[i]);
+      hi[i] = NT(1) - NT(v[i]);
+    }
+    Polytope<D, NT> P = Polytope<D, NT>::box(lo, hi);  // Vor_CV(v) ∩ [0,1]^D
+    for (const Pt& u : cv.cv) P.clip(bisector<D, NT>(vq, rel(u)));
+    const NT nn2 = dist2<NT, D>(rel(cv.nn), vq);
+    const NT lim = sq<NT>(params.rho) * nn2;
+    std::vector<Pt> out;
+    while (P.some_vertex_beyond(vq, lim)) {  // v is not ρ-well-spaced
+      KMR_CHECK(out.size() < 100000, "fill does not terminate");
+      Pt w = pick<NT>(vq, v, cv.nn, nn2, P);
+      out.push_back(w);
+      P.clip(bisector<D, NT>(vq, rel(w)));
+    }
+    return out;
   }
 
   void fill(const OpKey& k, Op& op) {
     CVResult cv = clipped_voronoi_neighbors(k.v, k.t);
     op.reads = cv.reads;
-    const QPoint<D> vq = vtx.at(k.v).q;
-    QPoint<D> lo, hi;
-    for (std::size_t i = 0; i < D; ++i) {
-      lo[i] = 0;
-      hi[i] = 1;
+    std::vector<Pt> ws;
+    try {
+      if (params.exact_only) throw Uncertain();
+      ws = fill_tier<IntervalNT>(k.v, cv);
+    } catch (const Uncertain&) {
+      stats.exact_fallbacks++;
+      ws = fill_tier<Q>(k.v, cv);
     }
-    Polytope<D> P = Polytope<D>::box(lo, hi);  // Vor_CV(v) ∩ [0,1]^D
-    for (auto& [u, d2] : cv.cv) P.clip(bisector<D>(vq, vtx.at(u).q));
-    Q lim = rho2 * cv.nn2;
-    std::uint64_t count = 0;
-    while (P.some_vertex_beyond(vq, lim)) {  // v is not ρ-well-spaced
-      Pt w = pick(vq, k.v, cv.nn2, P);
+    for (const Pt& w : ws) {
       KMR_CHECK(!vtx.count(w), "Steiner vertex coincides with a vertex");
       Vtx W;
-      W.q = to_q<D>(w);
       W.steiner = true;
       W.created = k.t;
-      Q dw = dist2<D>(W.q, vq);
-      QPoint<D> wq = W.q;
       vtx.emplace(w, std::move(W));
       place(w);  // QTInsertSteiner
       op.steiners.push_back(w);
-      enqueue(w, 0, dw, k, op);
-      P.clip(bisector<D>(vq, wq));
-      ++count;
+      enqueue(w, 0, rank_between(w, k.v), k, op);
     }
     stats.fills++;
-    stats.steiner_per_fill_max = std::max(stats.steiner_per_fill_max, count);
+    stats.steiner_per_fill_max = std::max<std::uint64_t>(stats.steiner_per_fill_max, ws.size());
   }
 
   // ---------- change propagation (Fig. 3.8) ----------
@@ -589,7 +734,6 @@ struct WellSpacedSet<D>::Impl {
     for (const K& l : tree.leaves()) leaves[l];
     for (const Pt& p : sorted) {
       Vtx V;
-      V.q = to_q<D>(p);
       V.created = Time{};
       vtx.emplace(p, std::move(V));
       place(p);
@@ -662,7 +806,6 @@ struct WellSpacedSet<D>::Impl {
     }
     std::vector<Pt> moved = apply_tree_change(ch);
     Vtx V;
-    V.q = to_q<D>(p);
     vtx.emplace(p, std::move(V));
     place(p);
     ++n_input;
@@ -774,10 +917,7 @@ std::vector<Point<D>> WellSpacedSet<D>::clipped_voronoi_neighbors(const Point<D>
   end.rank = std::numeric_limits<int>::max();
   auto res = impl_->clipped_voronoi_neighbors(v, end);
   if (squares_read) *squares_read = res.reads.size();
-  std::vector<Point<D>> out;
-  for (auto& [w, d] : res.cv) out.push_back(w);
-  std::sort(out.begin(), out.end());
-  return out;
+  return res.cv;
 }
 template <std::size_t D>
 const Params& WellSpacedSet<D>::params() const {
@@ -812,7 +952,7 @@ bool is_well_spaced(const std::vector<Point<D>>& M, double rho, std::string* why
   for (std::size_t v = 0; v < M.size(); ++v) {
     std::vector<std::pair<Q, std::size_t>> byd;
     for (std::size_t u = 0; u < M.size(); ++u)
-      if (u != v) byd.emplace_back(dist2<D>(q[u], q[v]), u);
+      if (u != v) byd.emplace_back(dist2(q[u], q[v]), u);
     if (byd.empty()) continue;
     std::sort(byd.begin(), byd.end());
     QPoint<D> lo, hi;
@@ -846,7 +986,7 @@ bool is_size_conforming(const std::vector<Point<D>>& N, const std::vector<Point<
     // lfs(v): radius of the smallest ball around v containing two input points
     Q a = -1, b = -1;
     for (const auto& x : nq) {
-      Q d = dist2<D>(x, mq[v]);
+      Q d = dist2(x, mq[v]);
       if (a < 0 || d < a) {
         b = a;
         a = d;
@@ -857,7 +997,7 @@ bool is_size_conforming(const std::vector<Point<D>>& N, const std::vector<Point<
     Q nn = -1;
     for (std::size_t u = 0; u < M.size(); ++u)
       if (u != v) {
-        Q d = dist2<D>(mq[u], mq[v]);
+        Q d = dist2(mq[u], mq[v]);
         if (nn < 0 || d < nn) nn = d;
       }
     if (b < 0 || nn < 0) continue;
@@ -876,7 +1016,7 @@ std::vector<std::size_t> brute_clipped_voronoi_neighbors(const std::vector<Point
   Q nn = -1;
   for (std::size_t u = 0; u < M.size(); ++u)
     if (u != v) {
-      Q d = dist2<D>(q[u], q[v]);
+      Q d = dist2(q[u], q[v]);
       if (nn < 0 || d < nn) nn = d;
     }
   Q r2 = Q(beta) * Q(beta) * nn;

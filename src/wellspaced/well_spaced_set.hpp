@@ -35,6 +35,7 @@ using Point = std::array<double, D>;
 struct Params {
   double rho = 1.5;   // well-spacedness ratio ρ > 1
   double beta = 3.0;  // clipping ratio β > ρ
+  bool exact_only = false;  // skip the interval tier (tests compare both tiers; results are equal)
 };
 
 template <std::size_t D>
@@ -52,6 +53,7 @@ struct Stats {
   std::uint64_t steiner_per_fill_max = 0;           // Lemma 3.3.9
   std::uint64_t steiner = 0;                        // Steiner vertices in the output
   std::uint64_t ops = 0;                            // operations in the computation graph
+  std::uint64_t exact_fallbacks = 0;                // clipped-Voronoi calls and fills the interval tier could not decide
   std::uint64_t squares = 0;                        // quadtree leaves
   int min_rank = 0, max_rank = 0;
   double seconds = 0;

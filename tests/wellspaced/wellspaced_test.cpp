@@ -97,6 +97,31 @@ TEST(WellspacedClippedVoronoi, L3_2_1_ScanEqualsBruteForce) {
   clipped_case<4>(gen::Kind::uniform, 5, 6, 3);
 }
 
+// The two-tier filter (spec/wellspaced.md, "Exactness"): the interval tier decides exactly what the
+// exact tier decides, so a run with the interval tier equals an exact-only run, vertex for vertex
+// and graph line for graph line; both tiers are exercised (the grid forces exact fallbacks).
+template <std::size_t D>
+void tiers_case(gen::Kind k, std::size_t n, std::uint64_t seed, bool expect_fallbacks) {
+  auto in = gen::points<D>(k, n, seed);
+  Params exact;
+  exact.exact_only = true;
+  WellSpacedSet<D> fast(in), slow(in, exact);
+  std::string what = std::to_string(D) + "D " + gen::name(k);
+  ASSERT_EQ(coords<D>(fast.vertices()), coords<D>(slow.vertices())) << what;
+  EXPECT_EQ(fast.canonical_graph(), slow.canonical_graph()) << what;
+  const auto& s = fast.stats();
+  if (expect_fallbacks) EXPECT_GT(s.exact_fallbacks, 0u) << what;  // degenerate: cocircular vertices
+  else EXPECT_LT(s.exact_fallbacks, (s.cv_calls + s.fills) / 10) << what << ": the interval tier decided too little";
+}
+TEST(WellspacedStatic, IntervalTierEqualsExactTier) {
+  tiers_case<2>(gen::Kind::uniform, 60, 3, false);
+  tiers_case<2>(gen::Kind::clustered, 60, 4, false);
+  tiers_case<2>(gen::Kind::close_pair, 40, 5, false);
+  tiers_case<2>(gen::Kind::grid, 49, 6, true);
+  tiers_case<3>(gen::Kind::uniform, 12, 7, false);
+  tiers_case<3>(gen::Kind::grid, 27, 8, true);
+}
+
 TEST(WellspacedDynamic, L3_4_2_UpdatesEqualFromScratch) {
   RecordProperty("claim", "L3.4.2");
   for (auto k : gen::kAllKinds) {

@@ -1,0 +1,85 @@
+// IntervalNT (src/exact/interval_nt.hpp): each guarantee of the header is a test here.
+#include "exact/interval_nt.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using kmr::exact::enclose;
+using kmr::exact::IntervalNT;
+using kmr::exact::Uncertain;
+using Q = boost::multiprecision::mpq_rational;
+
+namespace {
+
+bool holds(const IntervalNT& x, const Q& q) { return Q(x.lo()) <= q && q <= Q(x.hi()); }
+
+// Random doubles of mixed magnitudes and signs, including exact small dyadics.
+double sample(std::mt19937_64& g) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  switch (g() % 4) {
+    case 0: return std::ldexp(u(g), -static_cast<int>(g() % 60));
+    case 1: return std::ldexp(std::round(u(g) * 64), -6);
+    case 2: return u(g) * 1e6;
+    default: return u(g);
+  }
+}
+
+}  // namespace
+
+TEST(IntervalNT, EnclosureOfEveryOperation) {
+  std::mt19937_64 g(20121);
+  for (int it = 0; it < 20000; ++it) {
+    double a = sample(g), b = sample(g), c = sample(g);
+    IntervalNT A(a), B(b), C(c);
+    // compound expressions, so that non-point intervals are combined too
+    IntervalNT x = (A + B) * C - A * B, y = (A - C) * (B + C);
+    Q qa(a), qb(b), qc(c);
+    Q qx = (qa + qb) * qc - qa * qb, qy = (qa - qc) * (qb + qc);
+    ASSERT_TRUE(holds(x, qx)) << a << " " << b << " " << c;
+    ASSERT_TRUE(holds(y, qy)) << a << " " << b << " " << c;
+    if (y.lo() > 0 || y.hi() < 0) ASSERT_TRUE(holds(x / y, qx / qy)) << a << " " << b << " " << c;
+  }
+}
+
+TEST(IntervalNT, ExactResultsStayPoints) {
+  IntervalNT a(0.375), b(-1.25);
+  EXPECT_TRUE((a + b).is_point());
+  EXPECT_TRUE((a * b).is_point());
+  EXPECT_TRUE((a / IntervalNT(0.5)).is_point());
+  EXPECT_EQ((a * b).lo(), 0.375 * -1.25);
+  IntervalNT third = IntervalNT(1.0) / IntervalNT(3.0);  // not a double: a true interval
+  EXPECT_FALSE(third.is_point());
+  EXPECT_TRUE(holds(third, Q(1, 3)));
+  EXPECT_EQ(std::nextafter(third.lo(), 1.0), third.hi());  // one ulp wide
+}
+
+TEST(IntervalNT, DecisionsAreCertainOrThrow) {
+  IntervalNT third = IntervalNT(1.0) / IntervalNT(3.0);
+  EXPECT_EQ((third - IntervalNT(0.3)).sign(), 1);
+  EXPECT_TRUE(third < IntervalNT(0.34));
+  EXPECT_FALSE(third < IntervalNT(0.33));
+  EXPECT_EQ(IntervalNT(0.0).sign(), 0);
+  EXPECT_TRUE(IntervalNT(0.5) == IntervalNT(0.5));
+  // 3·(1/3) − 1 is 0 exactly, but the interval straddles 0: undecided
+  EXPECT_THROW((third * IntervalNT(3.0) - IntervalNT(1.0)).sign(), Uncertain);
+  EXPECT_THROW((void)(third == IntervalNT(1.0) / IntervalNT(3.0)), Uncertain);
+  EXPECT_THROW((void)(third < third), Uncertain);
+  EXPECT_THROW(IntervalNT(1.0) / (third - third), Uncertain);  // divisor holds 0
+  EXPECT_THROW(IntervalNT(1e300) * IntervalNT(1e300), Uncertain);  // overflow
+  EXPECT_THROW(IntervalNT(1e-200) * IntervalNT(1e-200), Uncertain);  // below fma's reach
+}
+
+TEST(IntervalNT, EncloseRationals) {
+  EXPECT_TRUE(enclose(Q(3, 8)).is_point());
+  EXPECT_EQ(enclose(Q(3, 8)).lo(), 0.375);
+  EXPECT_TRUE(enclose(Q(0)).is_point());
+  std::mt19937_64 g(7);
+  for (int it = 0; it < 2000; ++it) {
+    Q q(static_cast<long long>(g() % 2000001) - 1000000, static_cast<long long>(g() % 999999) + 1);
+    IntervalNT e = enclose(q);
+    ASSERT_TRUE(holds(e, q)) << q;
+    ASSERT_LE(e.hi() - e.lo(), 4 * std::ldexp(std::fabs(e.approx()), -52) + 1e-300) << q;
+  }
+}
