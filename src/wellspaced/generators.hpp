@@ -112,7 +112,8 @@ std::vector<Point<D>> points(Kind kind, std::size_t n, std::uint64_t seed) {
 // spacing h/face_grid on its faces (every lattice point of (h/face_grid)Z^D in [0,1]^D lying on a
 // box face, shared by neighbouring boxes) — our stand-in for Hudson's face grids [43, p.79], which
 // the thesis does not spell out. The dynamic vertex of a gadget is its centre + 2^-delta_log2 · e_1.
-// All coordinates are dyadic; `input` is sorted, `dynamic` lists the gadgets in lexicographic order.
+// Needs tiles_log2 + 1 < delta_log2 ≤ 50 (x inside its box, exact). All coordinates are dyadic; `input` is
+// sorted, `dynamic` lists the gadgets in lexicographic order.
 template <std::size_t D>
 struct GadgetTiling {
   std::vector<Point<D>> input;
