@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -114,7 +115,157 @@ Verdict t338(const Options& o) {
   return v;
 }
 
-// Theorem 3.4.3 and 3.4.5: insert a point at distance 2^-k next to an input vertex.
+// Lemma 3.3.6: an operation at rank r on v has NN_∞(v) ∈ Θ(ρ^r). The exact upper bound
+// NN_∞(v) < ρ^{r+1} of scheduled operations is asserted; the Θ sides are reported as min NN_∞/ρ^r
+// (all operations) and max NN_∞/ρ^r of input dispatches, and each may move by at most 2x from the
+// smallest to the largest n.
+template <std::size_t D>
+bool l336_series(Verdict& v, gen::Kind kind, const std::vector<std::size_t>& sizes, std::uint64_t seed, std::size_t& above) {
+  double lo0 = 0, hi0 = 0, lo = 0, hi = 0;
+  for (std::size_t n : sizes) {
+    WellSpacedSet<D> ws(gen::points<D>(kind, n, seed));
+    RankRatios R = rank_ratios<D>(ws);
+    above += R.above;
+    lo = std::min(R.lo, R.in_lo), hi = std::max(R.hi, R.in_hi);
+    if (n == sizes.front()) lo0 = lo, hi0 = hi;
+    v.figure(std::to_string(D) + "D " + gen::name(kind) + " n=" + std::to_string(n) + " NN_inf/rho^r scheduled min,max; input dispatch min,max",
+             fmt(R.lo) + ", " + fmt(R.hi) + "; " + fmt(R.in_lo) + ", " + fmt(R.in_hi));
+  }
+  return 2 * lo >= lo0 && hi <= 2 * hi0;
+}
+Verdict l336(const Options& o) {
+  Verdict v;
+  std::size_t above = 0;
+  bool ok = l336_series<2>(v, gen::Kind::uniform, o.quick ? std::vector<std::size_t>{50, 100, 200} : std::vector<std::size_t>{100, 300, 1000}, o.seed, above);
+  ok &= l336_series<2>(v, gen::Kind::clustered, o.quick ? std::vector<std::size_t>{50, 100, 200} : std::vector<std::size_t>{100, 300, 1000}, o.seed, above);
+  ok &= l336_series<3>(v, gen::Kind::uniform, o.quick ? std::vector<std::size_t>{6, 12} : std::vector<std::size_t>{10, 20, 40}, o.seed, above);
+  v.pass = ok && above == 0;
+  v.summary = std::to_string(above) + " scheduled operations with NN_inf(v) >= rho^(r+1) (exact); min and max of NN_inf/rho^r move <= 2x from smallest to largest n (2D uniform, clustered; 3D uniform)";
+  return v;
+}
+
+// Lemma 3.3.15: affected vertices (operations whose canonical-graph lines differ before/after an
+// update) lie within O(NN(v)) of v̂: max |v v̂|/NN(v) stays bounded as Δ grows (≤ 2x its value at the
+// smallest Δ, for each n) and as n grows (the smallest-Δ values move ≤ 2x from the smallest n).
+Verdict l3315(const Options& o) {
+  Verdict v;
+  std::vector<std::size_t> sizes = o.quick ? std::vector<std::size_t>{16, 64} : std::vector<std::size_t>{16, 64, 256};
+  std::vector<int> ks = o.quick ? std::vector<int>{10, 30} : std::vector<int>{10, 20, 30, 40};
+  double first = 0, worst = 0;
+  bool ok = true;
+  for (std::size_t n : sizes) {
+    auto base = base_input(n, o.seed + 4);
+    double at_small_delta = 0;
+    for (int k : ks) {
+      WellSpacedSet<2> ws(base);
+      Point<2> q = close_to(base[0], k);
+      auto G = ws.canonical_graph();
+      auto M = ws.vertices();
+      ws.insert(q);
+      auto G2 = ws.canonical_graph();
+      auto M2 = ws.vertices();
+      ws.erase(q);
+      AffectedRatio ins = affected_ratio<2>(G, M, G2, M2, q);
+      AffectedRatio del = affected_ratio<2>(G2, M2, ws.canonical_graph(), ws.vertices(), q);
+      double r = std::max(ins.max_ratio, del.max_ratio);
+      if (k == ks.front()) at_small_delta = r;
+      if (first == 0) first = r;
+      ok &= r > 0 && r <= 2 * at_small_delta;
+      worst = std::max(worst, r);
+      v.figure("n=" + std::to_string(n) + " Delta=2^" + std::to_string(k) + " max |v vhat|/NN(v) insert, delete; affected vertices",
+               fmt(ins.max_ratio) + ", " + fmt(del.max_ratio) + "; " + std::to_string(ins.vertices) + ", " + std::to_string(del.vertices));
+    }
+    ok &= at_small_delta <= 2 * first;
+  }
+  v.pass = ok;
+  v.summary = "insert/delete a point 2^-k from an input vertex: max |v vhat|/NN(v) over affected vertices in [" + fmt(first) + ", " +
+              fmt(worst) + "], within 2x of the smallest Delta for each n and of the smallest n";
+  return v;
+}
+
+// Theorem 3.3.11: StableWS runs in O(n log Δ): executed operations ÷ (n·log2 Δ) must not grow (last ≤
+// 1.5 × first in each series); seconds ÷ (n·log2 Δ) are reported.
+Verdict t3311(const Options& o) {
+  Verdict v;
+  bool ok = true;
+  double worst = 0;
+  auto run = [&](const std::string& what, const std::vector<Point<2>>& in, double& ratio) {
+    auto t0 = std::chrono::steady_clock::now();
+    WellSpacedSet<2> ws(in);
+    double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    double nlog = double(in.size()) * log2_spread<2>(in);
+    ratio = double(ws.stats().dispatches + ws.stats().fills) / nlog;
+    worst = std::max(worst, ratio);
+    v.figure(what + " log2 Delta; ops/(n log2 Delta); us/(n log2 Delta)", fmt(log2_spread<2>(in)) + "; " + fmt(ratio) + "; " + fmt(1e6 * sec / nlog));
+  };
+  double first = 0, r = 0;
+  for (std::size_t n : o.quick ? std::vector<std::size_t>{50, 100, 200} : std::vector<std::size_t>{250, 500, 1000, 2000}) {
+    run("uniform n=" + std::to_string(n), gen::points<2>(gen::Kind::uniform, n, o.seed + 5), r);
+    if (first == 0) first = r;
+  }
+  ok &= r <= 1.5 * first;
+  first = 0;
+  auto base = base_input(o.quick ? 50 : 200, o.seed + 5);
+  for (int k : {10, 20, 30, 40}) {
+    auto in = base;
+    in.push_back(close_to(base[0], k));
+    run("uniform n=" + std::to_string(base.size()) + " + pair at 2^-" + std::to_string(k), in, r);
+    if (first == 0) first = r;
+  }
+  ok &= r <= 1.5 * first;
+  v.pass = ok;
+  v.summary = "2D: executed operations / (n log2 Delta) (max " + fmt(worst) + ") do not grow with n nor with Delta (last <= 1.5 x first per series)";
+  return v;
+}
+
+// Theorem 3.4.5: the tiled gadgets of §3.4.2 (gen::gadget_tiling): n dynamic insertions, one per
+// gadget, insert Ω(n log Δ) Steiner vertices. Reports inserted ÷ (n·log2 Δ), Δ the spread of the final
+// input. Passes when the ratio stays ≥ c0 = 1/(2 log2(2ρ)) (half the density along one segment in
+// Lemma 3.4.4's proof), does not fall as Δ grows (for each n; O(n) changes would fall like 1/log Δ),
+// and at the common largest Δ falls ≤ 2x from n = 1 to the largest n.
+Verdict t345(const Options& o) {
+  Verdict v;
+  // (tiles_log2, delta_log2): n = 4^tiles_log2 gadgets; the 64-gadget tiling only up to 2^-14 (time)
+  std::vector<std::pair<int, std::vector<int>>> runs =
+      o.quick ? std::vector<std::pair<int, std::vector<int>>>{{0, {10, 15}}, {1, {10, 15}}, {2, {10, 15}}}
+              : std::vector<std::pair<int, std::vector<int>>>{{0, {10, 14, 22}}, {1, {10, 14, 22}}, {2, {10, 14, 22}}, {3, {10, 14}}};
+  const int common = o.quick ? 15 : 14;
+  double lo = std::numeric_limits<double>::infinity(), hi = 0, c0 = 0, single = 0, largest = 0;
+  bool ok = true;
+  for (const auto& [j, ks] : runs) {
+    double at_small = 0, ratio = 0;
+    for (int k : ks) {
+      auto G = gen::gadget_tiling<2>(j, k);
+      WellSpacedSet<2> ws(G.input);
+      c0 = 1 / (2 * std::log2(2 * ws.params().rho));
+      std::uint64_t inserted = 0, deleted = 0;
+      for (const auto& x : G.dynamic) {
+        UpdateStats u = ws.insert(x);
+        inserted += u.steiner_inserted;
+        deleted += u.steiner_deleted;
+      }
+      std::vector<Point<2>> all = G.input;
+      all.insert(all.end(), G.dynamic.begin(), G.dynamic.end());
+      double n = double(G.dynamic.size()), lg = log2_spread<2>(all);
+      ratio = double(inserted) / (n * lg);
+      if (k == ks.front()) at_small = ratio;
+      if (k == common) (j == 0 ? single : largest) = ratio;
+      lo = std::min(lo, ratio);
+      hi = std::max(hi, ratio);
+      v.figure("n=" + std::to_string(G.dynamic.size()) + " gadgets (" + std::to_string(G.input.size()) + " input) delta=2^-" + std::to_string(k) +
+                   " log2 Delta; Steiner inserted, deleted; inserted/(n log2 Delta)",
+               fmt(lg) + "; " + std::to_string(inserted) + ", " + std::to_string(deleted) + "; " + fmt(ratio));
+    }
+    ok &= ratio >= at_small;
+  }
+  v.pass = ok && lo >= c0 && 2 * largest >= single;
+  v.summary = "tiled gadgets, one dynamic insertion per gadget: Steiner vertices inserted / (n log2 Delta) in [" + fmt(lo) + ", " + fmt(hi) +
+              "] >= c0 = 1/(2 log2(2 rho)) = " + fmt(c0) + "; not falling as Delta grows; at Delta = 2^" + std::to_string(common) + " n = 1: " +
+              fmt(single) + ", largest n: " + fmt(largest);
+  return v;
+}
+
+// Theorem 3.4.3 (and the single gadget of Lemma 3.4.4): insert a point at distance 2^-k next to an input vertex.
 Verdict t343(const Options& o, bool lower_bound) {
   Verdict v;
   std::vector<int> ks = o.quick ? std::vector<int>{10, 20, 30} : std::vector<int>{10, 20, 30, 40};
@@ -171,9 +322,13 @@ std::vector<Check> wellspaced_checks() {
   return {
       {"T3.3.4", "StableWS output is rho-well-spaced and size-conforming (2D, 3D)", t334},
       {"L3.4.2", "PropagateWS output and computation graph equal from-scratch after random updates", l342},
+      {"L3.3.6", "an operation at rank r on v has NN_inf(v) in Theta(rho^r)", l336},
       {"T3.3.8", "O(1) squares per clipped-Voronoi call and Steiner vertices per fill (Lemma 3.3.9)", t338},
+      {"T3.3.11", "StableWS in O(n log Delta): operations / (n log2 Delta) bounded", t3311},
+      {"L3.3.15", "affected vertices within O(NN(v)) of the updated point", l3315},
       {"T3.4.3", "O(log Delta) operations per dynamic update", [](const Options& o) { return t343(o, false); }},
-      {"T3.4.5", "Omega(log Delta) Steiner changes for an insertion next to a vertex", [](const Options& o) { return t343(o, true); }},
+      {"L3.4.4", "Omega(log Delta) Steiner changes for an insertion next to a vertex (one gadget)", [](const Options& o) { return t343(o, true); }},
+      {"T3.4.5", "Omega(n log Delta) Steiner insertions for n gadget insertions (tiled gadgets)", t345},
       {"T3.4.3-speed", "update vs from-scratch time ratio", speed},
   };
 }

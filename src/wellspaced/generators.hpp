@@ -107,4 +107,50 @@ std::vector<Point<D>> points(Kind kind, std::size_t n, std::uint64_t seed) {
   return {out.begin(), out.end()};
 }
 
+// Theorem 3.4.5's lower-bound input (§3.4.2, Fig. 3.10): [0,1]^D tiled by 2^{tiles_log2·D} gadget
+// boxes of side h = 2^-tiles_log2. Each gadget has an input vertex at its centre and a grid of
+// spacing h/face_grid on its faces (every lattice point of (h/face_grid)Z^D in [0,1]^D lying on a
+// box face, shared by neighbouring boxes) — our stand-in for Hudson's face grids [43, p.79], which
+// the thesis does not spell out. The dynamic vertex of a gadget is its centre + 2^-delta_log2 · e_1.
+// Needs tiles_log2 + 1 < delta_log2 ≤ 50 (x inside its box, exact). All coordinates are dyadic; `input` is
+// sorted, `dynamic` lists the gadgets in lexicographic order.
+template <std::size_t D>
+struct GadgetTiling {
+  std::vector<Point<D>> input;
+  std::vector<Point<D>> dynamic;
+};
+template <std::size_t D>
+GadgetTiling<D> gadget_tiling(int tiles_log2, int delta_log2, int face_grid = 4) {
+  const long per_axis = 1L << tiles_log2, g = face_grid, lattice = per_axis * g;
+  const double h = std::ldexp(1.0, -tiles_log2);
+  std::set<Point<D>> input;
+  std::vector<Point<D>> dynamic;
+  std::array<long, D> k{};
+  for (;;) {  // lattice points on box faces
+    bool on_face = false;
+    Point<D> p;
+    for (std::size_t i = 0; i < D; ++i) {
+      on_face = on_face || k[i] % g == 0;
+      p[i] = static_cast<double>(k[i]) * h / static_cast<double>(g);
+    }
+    if (on_face) input.insert(p);
+    std::size_t i = 0;
+    while (i < D && ++k[i] > lattice) k[i++] = 0;
+    if (i == D) break;
+  }
+  std::array<long, D> b{};
+  for (;;) {  // gadget centres and dynamic vertices
+    Point<D> c;
+    for (std::size_t i = 0; i < D; ++i) c[i] = (static_cast<double>(b[i]) + 0.5) * h;
+    input.insert(c);
+    c[0] += std::ldexp(1.0, -delta_log2);
+    dynamic.push_back(c);
+    std::size_t i = 0;
+    while (i < D && ++b[i] == per_axis) b[i++] = 0;
+    if (i == D) break;
+  }
+  std::sort(dynamic.begin(), dynamic.end());
+  return {{input.begin(), input.end()}, dynamic};
+}
+
 }  // namespace kmr::wellspaced::gen
