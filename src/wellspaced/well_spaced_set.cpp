@@ -84,6 +84,8 @@ struct WellSpacedSet<D>::Impl {
   struct Leaf {
     const Pt* input = nullptr;
     std::vector<Pt> verts;  // vertices (input and Steiner) inside
+    std::vector<K> adjacent;  // cache of tree.adjacent_leaves(this square), valid if adjacent_ok
+    bool adjacent_ok = false;
   };
 
   Params params;
@@ -95,7 +97,7 @@ struct WellSpacedSet<D>::Impl {
   std::unordered_map<K, Leaf, KeyHash<D>> leaves;
   std::map<OpKey, Op> ops;
   std::map<Pt, std::set<Time>> ops_by_vertex;
-  std::unordered_map<K, std::set<OpKey>, KeyHash<D>> readers;
+  std::unordered_map<K, std::vector<OpKey>, KeyHash<D>> readers;  // square → its readers (unordered)
   std::set<OpKey> pending;
   std::map<int, Q> rho_pow2;  // ρ^{2r}
   std::map<int, IntervalNT> rho_pow2_i;  // enclosures of ρ^{2r}
@@ -133,14 +135,22 @@ struct WellSpacedSet<D>::Impl {
   }
   // ⌊log_ρ |ab|⌋, exactly: decided on intervals when they suffice, else in rationals.
   int rank_between(const Pt& a, const Pt& b) {
-    IntervalNT d2 = dist2<IntervalNT, D>(point_in<IntervalNT, D>(a), point_in<IntervalNT, D>(b));
     try {
+      return rank_in<IntervalNT>(dist2<IntervalNT, D>(point_in<IntervalNT, D>(a), point_in<IntervalNT, D>(b)));
+    } catch (const Uncertain&) {
+      return rank_of(dist2<Q, D>(to_q<D>(a), to_q<D>(b)));
+    }
+  }
+  // ⌊log_ρ sqrt(d2)⌋ in NT (Uncertain when intervals do not decide it).
+  template <class NT>
+  int rank_in(const NT& d2) {
+    if constexpr (!is_interval_v<NT>) {
+      return rank_of(d2);
+    } else {
       int r = static_cast<int>(std::floor(std::log(d2.approx()) / (2 * std::log(params.rho))));
       while (rpow_i(r + 1) <= d2) ++r;
       while (rpow_i(r) > d2) --r;
       return r;
-    } catch (const Uncertain&) {
-      return rank_of(dist2<Q, D>(to_q<D>(a), to_q<D>(b)));
     }
   }
   const IntervalNT& rpow_i(int r) {
@@ -179,6 +189,15 @@ struct WellSpacedSet<D>::Impl {
   const Pt* leaf_input(const K& leaf) const {
     auto it = leaves.find(leaf);
     return it == leaves.end() ? nullptr : it->second.input;
+  }
+  // Leaves adjacent to leaf s (sorted), cached per leaf (apply_tree_change invalidates).
+  const std::vector<K>& adjacent_leaves(const K& s) {
+    Leaf& L = leaves.at(s);
+    if (!L.adjacent_ok) {
+      L.adjacent = tree.adjacent_leaves(s);
+      L.adjacent_ok = true;
+    }
+    return L.adjacent;
   }
   void place(const Pt& x) {
     auto& V = vtx.at(x);
@@ -444,7 +463,7 @@ struct WellSpacedSet<D>::Impl {
         }
       }
       if (nn_fixed && cand.size() > before) clip_from(before);
-      for (const K& n : tree.adjacent_leaves(s))
+      for (const K& n : adjacent_leaves(s))
         if (seen.insert(n).second) heap.push({box_dist2_lower(v, vabs, n), n});
     }
     KMR_CHECK(!cand.empty(), "clipped Voronoi scan found no vertex");
@@ -499,8 +518,8 @@ struct WellSpacedSet<D>::Impl {
 
   // Pick w ∈ Vor^{(ρ,β)}(v): toward the farthest vertex x* of the cell, at a squared distance
   // between ρ²NN² and min(β²NN², |vx*|²), rounded to doubles, verified exactly. The direction is
-  // x* truncated to a grid of spacing 2^{ℓ(r)−16} relative to v (r = rank of NN), so it is a
-  // function of v, NN and the cell only — the same in both tiers.
+  // x* − v truncated to a grid of spacing 2^{ℓ(r*)−20} (r* = rank of |vx*|), so it is a function
+  // of v, NN and the cell only — the same in both tiers.
   template <class NT>
   Pt pick(const std::array<NT, D>& vq, const Pt& v, const Pt& nn, const NT& nn2, const Polytope<D, NT>& P) {
     const typename Polytope<D, NT>::Vert* far = nullptr;
@@ -512,12 +531,11 @@ struct WellSpacedSet<D>::Impl {
         far = &x;
       }
     }
-    const int e = ell(rank_between(v, nn)) - 16;
+    const int e = ell(rank_in<NT>(fd)) - 20;  // 2^e ≥ |vx*|·2^-22: at most 2^23 steps per axis
     Pt xs;
     for (std::size_t i = 0; i < D; ++i) {
       const NT& off = far->x[i];  // P is relative to v
-      double steps = floor_div_pow2<NT>(off, e);
-      xs[i] = v[i] + std::ldexp(std::clamp(steps, -0x1p50, 0x1p50), e);
+      xs[i] = v[i] + std::ldexp(floor_div_pow2<NT>(off, e), e);
     }
     double n2 = 0, F = 0;
     for (std::size_t i = 0; i < D; ++i) {
@@ -526,7 +544,9 @@ struct WellSpacedSet<D>::Impl {
     }
     const NT lo2 = sq<NT>(params.rho) * nn2, bmax = sq<NT>(params.beta) * nn2;
     const double l = params.rho * params.rho * n2, h = std::min(params.beta * params.beta * n2, F);
-    const double fr[] = {0.5, 0.25, 0.75, 0.125, 0.875, 0.375, 0.625, 0.0625, 0.9375, 0.03125};
+    // fractions of the way from ρ²NN² to min(β²NN², |vx*|²), tried in order; 0.2 first gave the
+    // smallest outputs against CGAL Mesh_2 (bench/wellspaced_mesh2; spec/wellspaced.md)
+    const double fr[] = {0.2, 0.1, 0.35, 0.05, 0.5, 0.7, 0.9, 0.025};
     for (double f : fr) {
       if (!(F > 0)) break;
       double lam = std::sqrt((l + f * (h - l)) / F);
@@ -541,31 +561,28 @@ struct WellSpacedSet<D>::Impl {
     if constexpr (is_interval_v<NT>) throw Uncertain();  // let the exact tier report it
     throw ContractError("no double-precision point found in the picking region (degenerate cell)");
   }
-  // ⌊x / 2^e⌋ as a double (exact for |x / 2^e| ≤ 2^52; larger values are clamped by the caller).
+  // ⌊x / 2^e⌋ as a double, for |x / 2^e| < 2^52 (exact there).
   template <class NT>
   static double floor_div_pow2(const NT& x, int e) {
     if constexpr (is_interval_v<NT>) {
       double a = std::floor(std::ldexp(x.lo(), -e)), b = std::floor(std::ldexp(x.hi(), -e));
-      if (a != b || std::fabs(a) > 0x1p52) {
-        if (std::min(a, b) > 0x1p51) return 0x1p51;
-        if (std::max(a, b) < -0x1p51) return -0x1p51;
-        throw Uncertain();
-      }
+      KMR_CHECK(std::fabs(a) < 0x1p52 && std::fabs(b) < 0x1p52, "floor_div_pow2 out of range");
+      if (a != b) throw Uncertain();
       return a;
     } else {
       Q y = x;
-      if (e < 0) mpz_mul_2exp(mpq_numref(y.backend().data()), mpq_numref(y.backend().data()), static_cast<unsigned>(-e));
-      else mpz_mul_2exp(mpq_denref(y.backend().data()), mpq_denref(y.backend().data()), static_cast<unsigned>(e));
-      mpq_canonicalize(y.backend().data());
+      auto* r = y.backend().data();
+      if (e < 0) mpz_mul_2exp(mpq_numref(r), mpq_numref(r), static_cast<unsigned>(-e));
+      else mpz_mul_2exp(mpq_denref(r), mpq_denref(r), static_cast<unsigned>(e));
+      mpq_canonicalize(r);
       mpz_t f;
       mpz_init(f);
-      mpz_fdiv_q(f, mpq_numref(y.backend().data()), mpq_denref(y.backend().data()));
-      double r;
-      if (mpz_cmp_d(f, 0x1p51) > 0) r = 0x1p51;
-      else if (mpz_cmp_d(f, -0x1p51) < 0) r = -0x1p51;
-      else r = mpz_get_d(f);
+      mpz_fdiv_q(f, mpq_numref(r), mpq_denref(r));
+      bool ok = mpz_cmpabs_d(f, 0x1p52) < 0;
+      double out = mpz_get_d(f);
       mpz_clear(f);
-      return r;
+      KMR_CHECK(ok, "floor_div_pow2 out of range");
+      return out;
     }
   }
 
@@ -624,8 +641,12 @@ struct WellSpacedSet<D>::Impl {
     for (const K& s : op.reads) {
       auto it = readers.find(s);
       if (it != readers.end()) {
-        it->second.erase(k);
-        if (it->second.empty()) readers.erase(it);
+        auto& rs = it->second;
+        auto at = std::find(rs.begin(), rs.end(), k);
+        KMR_CHECK(at != rs.end(), "undo: operation missing from its square's readers");
+        *at = rs.back();
+        rs.pop_back();
+        if (rs.empty()) readers.erase(it);
       }
     }
     for (const OpKey& t : op.targets) {
@@ -658,7 +679,7 @@ struct WellSpacedSet<D>::Impl {
       if (k.t.type == 0) dispatch(k, op);
       else fill(k, op);
       op.executed = true;
-      for (const K& s : op.reads) readers[s].insert(k);
+      for (const K& s : op.reads) readers[s].push_back(k);
     }
     // targets no longer enqueued by k
     for (const OpKey& t : old_targets)
@@ -755,6 +776,10 @@ struct WellSpacedSet<D>::Impl {
       leaves.erase(it);
     }
     for (const K& s : ch.fresh) leaves[s];
+    // a leaf's adjacency changes only if an adjacent leaf appeared or disappeared; every leaf now
+    // covering a vanished leaf's region is fresh, so the fresh leaves and their neighbours suffice
+    for (const K& s : ch.fresh)
+      for (const K& n : tree.adjacent_leaves(s)) leaves.at(n).adjacent_ok = false;
     std::vector<Pt> inputs;
     for (const Pt& x : moved) {
       place(x);
