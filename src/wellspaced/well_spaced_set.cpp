@@ -84,8 +84,12 @@ struct WellSpacedSet<D>::Impl {
   struct Leaf {
     const Pt* input = nullptr;
     std::vector<Pt> verts;  // vertices (input and Steiner) inside
-    std::vector<K> adjacent;  // cache of tree.adjacent_leaves(this square), valid if adjacent_ok
+    K key;
+    // cache of tree.adjacent_leaves(key), valid if adjacent_ok; the pointers stay valid while it is
+    // (unordered_map nodes do not move; a vanished leaf's neighbours are all invalidated)
+    std::vector<Leaf*> adjacent;
     bool adjacent_ok = false;
+    std::uint64_t stamp = 0;  // the last scan that reached this square
   };
 
   Params params;
@@ -95,6 +99,7 @@ struct WellSpacedSet<D>::Impl {
   Quadtree<D> tree;
   std::map<Pt, Vtx> vtx;
   std::unordered_map<K, Leaf, KeyHash<D>> leaves;
+  std::uint64_t scan_stamp = 0;  // numbers the clipped-Voronoi scans (Leaf::stamp)
   std::map<OpKey, Op> ops;
   std::map<Pt, std::set<Time>> ops_by_vertex;
   std::unordered_map<K, std::vector<OpKey>, KeyHash<D>> readers;  // square → its readers (unordered)
@@ -190,11 +195,17 @@ struct WellSpacedSet<D>::Impl {
     auto it = leaves.find(leaf);
     return it == leaves.end() ? nullptr : it->second.input;
   }
-  // Leaves adjacent to leaf s (sorted), cached per leaf (apply_tree_change invalidates).
-  const std::vector<K>& adjacent_leaves(const K& s) {
-    Leaf& L = leaves.at(s);
+  // The leaf record of square s (created on first use).
+  Leaf& leaf_of(const K& s) {
+    auto [it, fresh] = leaves.try_emplace(s);
+    if (fresh) it->second.key = s;
+    return it->second;
+  }
+  // Leaves adjacent to leaf L (sorted by key), cached per leaf (apply_tree_change invalidates).
+  const std::vector<Leaf*>& adjacent_leaves(Leaf& L) {
     if (!L.adjacent_ok) {
-      L.adjacent = tree.adjacent_leaves(s);
+      L.adjacent.clear();
+      for (const K& n : tree.adjacent_leaves(L.key)) L.adjacent.push_back(&leaves.at(n));
       L.adjacent_ok = true;
     }
     return L.adjacent;
@@ -203,7 +214,7 @@ struct WellSpacedSet<D>::Impl {
     auto& V = vtx.at(x);
     K l = tree.locate(x);
     V.leaf = l;
-    auto& L = leaves[l];
+    auto& L = leaf_of(l);
     L.verts.push_back(x);
     if (!V.steiner) {
       KMR_CHECK(L.input == nullptr, "crowding violated: two inputs in one square");
@@ -312,12 +323,34 @@ struct WellSpacedSet<D>::Impl {
     }
     return d.lo();
   }
+  // Enclosures, per vertex c of a cell C around v, of c's absolute coordinates and of |cv|².
+  struct VertexBounds {
+    std::array<double, D> lo, hi;
+    double r_lo, r_hi;
+  };
   // Exact: does square s meet B(c, |cv|) for some vertex c of C (the certificate region of C)?
-  // `radii` holds the enclosures of |cv|² for the vertices c of C, in order.
+  // C is relative to its site v, which sits at the origin; `vb` holds its vertices' bounds.
   template <class NT>
-  // C is relative to its site v, which sits at the origin.
-  static bool meets_certificate_region(const Polytope<D, NT>& C, const std::vector<IntervalNT>& radii, const Pt& v,
+  static bool meets_certificate_region(const Polytope<D, NT>& C, const std::vector<VertexBounds>& vb, const Pt& v,
                                        const K& s) {
+    if (s.level <= 52) {  // fast path: the square's corners are doubles; plain double arithmetic,
+      // each squared gap sum within a relative 2^-49 of its value (≤ 7 roundings), decided only
+      // when the margin 2^-48 separates it from the enclosure of |cv|²
+      const double h = std::ldexp(1.0, -s.level);
+      bool undecided = false;
+      for (const VertexBounds& c : vb) {
+        double glo = 0, ghi = 0;
+        for (std::size_t i = 0; i < D; ++i) {
+          double sl = static_cast<double>(s.k[i]) * h, sh = sl + h;
+          double a = std::max({0.0, sl - c.hi[i], c.lo[i] - sh}), b = std::max({0.0, sl - c.lo[i], c.hi[i] - sh});
+          glo += a * a;
+          ghi += b * b;
+        }
+        if (ghi * (1 + 0x1p-48) < c.r_lo) return true;
+        if (!(glo * (1 - 0x1p-48) > c.r_hi)) undecided = true;
+      }
+      if (!undecided) return false;
+    }
     auto b = square_bounds(s);
     for (std::size_t i = 0; i < D; ++i) {
       b[i].first -= IntervalNT(v[i]);
@@ -330,8 +363,9 @@ struct WellSpacedSet<D>::Impl {
         IntervalNT g = axis_gap(c.xi[i], b[i].first, b[i].second);
         if (g.hi() > 0) gap += g * g;
       }
-      if (gap.hi() < radii[j].lo()) return true;  // the common case, decided without rounding
-      int sg = filtered_sign<NT>(gap - radii[j], [&] {
+      IntervalNT radius = IntervalNT::hull(vb[j].r_lo, vb[j].r_hi);
+      if (gap.hi() < radius.lo()) return true;
+      int sg = filtered_sign<NT>(gap - radius, [&] {
         NT side = NT(1);
         for (int l = 0; l < s.level; ++l) side /= NT(2);
         NT g2 = 0;
@@ -365,12 +399,17 @@ struct WellSpacedSet<D>::Impl {
     const IPoint<D> vi{};
     const IPoint<D> vabs = point_in<IntervalNT, D>(v);
     auto rel = [&](const Pt& u) { return relative_to<NT, D>(u, v); };
-    using QE = std::pair<double, K>;
+    struct QE {  // a square to scan, ordered by (lower bound on its distance, key)
+      double key;
+      Leaf* leaf;
+      bool operator>(const QE& o) const { return key != o.key ? key > o.key : leaf->key > o.leaf->key; }
+    };
     std::priority_queue<QE, std::vector<QE>, std::greater<QE>> heap;
-    std::unordered_set<K, KeyHash<D>> seen;
-    K start = vtx.at(v).leaf;
-    heap.push({0.0, start});
-    seen.insert(start);
+    const std::uint64_t stamp = ++scan_stamp;  // squares reached by this scan carry it
+    const K start = vtx.at(v).leaf;
+    Leaf& start_leaf = leaves.at(start);
+    heap.push({0.0, &start_leaf});
+    start_leaf.stamp = stamp;
     struct Cand {
       double approx;   // |uv|² rounded (the clipping order)
       IntervalNT d;    // |uv|² enclosed
@@ -431,18 +470,31 @@ struct WellSpacedSet<D>::Impl {
       });
       clip_from(0);
     };
-    std::vector<IntervalNT> radii;  // |cv|² for the vertices c of C
-    unsigned radii_version = ~0u;
+    std::vector<VertexBounds> vb;  // bounds of the vertices of C
+    unsigned vb_version = ~0u;
     auto meets = [&](const K& s) {
-      if (radii_version != C->version || radii.size() != C->v.size()) {
-        radii.clear();
-        for (const auto& c : C->v) radii.push_back(dist2<IntervalNT, D>(c.xi, vi));
-        radii_version = C->version;
+      if (vb_version != C->version || vb.size() != C->v.size()) {
+        vb.clear();
+        for (const auto& c : C->v) {
+          VertexBounds b;
+          for (std::size_t i = 0; i < D; ++i) {
+            IntervalNT x = c.xi[i] + vabs[i];
+            b.lo[i] = x.lo();
+            b.hi[i] = x.hi();
+          }
+          IntervalNT r = dist2<IntervalNT, D>(c.xi, vi);
+          b.r_lo = r.lo();
+          b.r_hi = r.hi();
+          vb.push_back(b);
+        }
+        vb_version = C->version;
       }
-      return meets_certificate_region<NT>(*C, radii, v, s);
+      return meets_certificate_region<NT>(*C, vb, v, s);
     };
     while (!heap.empty()) {
-      auto [key, s] = heap.top();
+      const double key = heap.top().key;
+      Leaf& L = *heap.top().leaf;
+      const K& s = L.key;
       if (!nn_fixed && key > best) fix_nn();
       if (nn_fixed && key > limit) break;
       heap.pop();
@@ -450,10 +502,9 @@ struct WellSpacedSet<D>::Impl {
       if (nn_fixed) late.push_back(s);
       else res.reads.push_back(s);
       std::size_t before = cand.size();
-      auto it = leaves.find(s);
-      if (it != leaves.end()) {
+      {
         std::vector<Pt> here;
-        for (const Pt& u : it->second.verts)
+        for (const Pt& u : L.verts)
           if (!(u == v) && vtx.at(u).created < t) here.push_back(u);
         std::sort(here.begin(), here.end());
         for (const Pt& u : here) {
@@ -463,8 +514,11 @@ struct WellSpacedSet<D>::Impl {
         }
       }
       if (nn_fixed && cand.size() > before) clip_from(before);
-      for (const K& n : adjacent_leaves(s))
-        if (seen.insert(n).second) heap.push({box_dist2_lower(v, vabs, n), n});
+      for (Leaf* n : adjacent_leaves(L))
+        if (n->stamp != stamp) {
+          n->stamp = stamp;
+          heap.push({box_dist2_lower(v, vabs, n->key), n});
+        }
     }
     KMR_CHECK(!cand.empty(), "clipped Voronoi scan found no vertex");
     if (!nn_fixed) fix_nn();
@@ -752,7 +806,7 @@ struct WellSpacedSet<D>::Impl {
     }
     std::vector<Pt> sorted(seen.begin(), seen.end());
     tree.build(sorted);  // QTBuild
-    for (const K& l : tree.leaves()) leaves[l];
+    for (const K& l : tree.leaves()) leaf_of(l);
     for (const Pt& p : sorted) {
       Vtx V;
       V.created = Time{};
@@ -775,7 +829,7 @@ struct WellSpacedSet<D>::Impl {
       for (const Pt& x : it->second.verts) moved.push_back(x);
       leaves.erase(it);
     }
-    for (const K& s : ch.fresh) leaves[s];
+    for (const K& s : ch.fresh) leaf_of(s);
     // a leaf's adjacency changes only if an adjacent leaf appeared or disappeared; every leaf now
     // covering a vanished leaf's region is fresh, so the fresh leaves and their neighbours suffice
     for (const K& s : ch.fresh)
