@@ -21,16 +21,6 @@ namespace kmr::oracle::ws {
 
 using detail::Q;
 
-#ifndef KMR_WS_HAVE_CGAL_4D
-template <>
-std::vector<std::vector<std::uint32_t>> cgal_delaunay_adjacency<4>(const std::vector<XPoint<4>>&) {
-  throw InputError("4D oracle unavailable: CGAL's dD Delaunay needs Eigen3 (libeigen3-dev)");
-}
-bool cgal_4d_available() { return false; }
-#else
-bool cgal_4d_available() { return true; }
-#endif
-
 double Rho::approx() const { return std::sqrt(sq_num.to_double() / sq_den.to_double()); }
 
 template <std::size_t D>
@@ -272,7 +262,6 @@ struct CellOracle<D>::Impl {
   }
 
   std::vector<std::uint32_t> beta(std::size_t v, const Q& beta_sq, BetaOptions opt) const {
-    KMR_CHECK(D <= 3, "β-clipped neighbours: D = 2, 3");
     // Candidates: every point u with |uv| ≤ 2β·NN(v) (a face point x with |xv| ≤ β·NN(v) has
     // |uv| ≤ |ux| + |xv| = 2|xv|). They are found by a search of CGAL's Delaunay graph from v
     // restricted to that ball, which reaches all of them (greedy routing: every site u ≠ v has a
@@ -296,8 +285,13 @@ struct CellOracle<D>::Impl {
           stack.push_back(u);
         }
       }
-      std::sort(cand.begin(), cand.end());
     }
+    // Nearest candidates first (the polytope shrinks early); the final polytope, and the planes
+    // recorded at each of its vertices, do not depend on the order.
+    std::sort(cand.begin(), cand.end(), [&](std::uint32_t a, std::uint32_t b) {
+      Q da = dist2<D>(q[a], q[v]), db = dist2<D>(q[b], q[v]);
+      return da < db || (da == db && a < b);
+    });
     Polytope<D> P = unit_box();
     if (!opt.clip_to_domain) {
       // A box containing the closed ball B(v, β·NN(v)): half side max(1, β²)·|v − nn|_1.
@@ -311,6 +305,7 @@ struct CellOracle<D>::Impl {
     std::vector<int> plane_of(cand.size());
     for (std::size_t k = 0; k < cand.size(); ++k) plane_of[k] = P.clip(bisector<D>(q[v], q[cand[k]]));
     const Q bound = beta_sq * nn2[v];
+    const bool kkt = D >= 4 || opt.kkt_face_distance;
     std::vector<std::uint32_t> out;
     for (std::size_t k = 0; k < cand.size(); ++k) {
       const int id = plane_of[k];
@@ -319,32 +314,118 @@ struct CellOracle<D>::Impl {
       for (const auto& w : P.vs)
         if (std::binary_search(w.planes.begin(), w.planes.end(), id)) face.push_back(&w);
       if (face.empty()) continue;  // not a Voronoi neighbour (within the clipping box)
-      QP<D> m;
-      for (std::size_t j = 0; j < D; ++j) m[j] = (q[v][j] + u[j]) / 2;
-      Q d2;
-      if (P.contains(m)) {
-        d2 = dist2<D>(m, q[v]);
+      bool in;
+      if (kkt) {
+        in = face_within_kkt(P, id, face, v, bound, opt.strict);
       } else {
-        d2 = dist2<D>(face[0]->x, q[v]);
-        for (auto* w : face) d2 = std::min(d2, dist2<D>(w->x, q[v]));
-        for (std::size_t a = 0; a < face.size(); ++a)
-          for (std::size_t b = a + 1; b < face.size(); ++b) {
-            auto shared = Polytope<D>::intersect(face[a]->planes, face[b]->planes);
-            if (!P.on_common_edge(shared)) continue;
-            QP<D> ab, av;
-            for (std::size_t j = 0; j < D; ++j)
-              ab[j] = face[b]->x[j] - face[a]->x[j], av[j] = q[v][j] - face[a]->x[j];
-            Q t = dot<D>(av, ab) / dot<D>(ab, ab);
-            if (t <= 0 || t >= 1) continue;
-            QP<D> p;
-            for (std::size_t j = 0; j < D; ++j) p[j] = face[a]->x[j] + t * ab[j];
-            d2 = std::min(d2, dist2<D>(p, q[v]));
-          }
+        const Q d2 = face_dist2_23(P, face, v, u);
+        in = opt.strict ? d2 < bound : d2 <= bound;
       }
-      if (opt.strict ? d2 < bound : d2 <= bound) out.push_back(cand[k]);
+      if (in) out.push_back(cand[k]);
     }
     std::sort(out.begin(), out.end());
     return out;
+  }
+
+  // dist(v, F_u)², F_u = P ∩ bisector(v, u) (D = 2, 3): the midpoint of uv if it lies in P (the
+  // projection of v onto the bisector), else the nearest point lies on the boundary of F_u, a
+  // vertex or a point of an edge of F_u (F_u has dimension ≤ 2).
+  Q face_dist2_23(const Polytope<D>& P, const std::vector<const typename Polytope<D>::Vtx*>& face,
+                  std::size_t v, const QP<D>& u) const {
+    QP<D> m;
+    for (std::size_t j = 0; j < D; ++j) m[j] = (q[v][j] + u[j]) / 2;
+    if (P.contains(m)) return dist2<D>(m, q[v]);
+    Q d2 = dist2<D>(face[0]->x, q[v]);
+    for (auto* w : face) d2 = std::min(d2, dist2<D>(w->x, q[v]));
+    for (std::size_t a = 0; a < face.size(); ++a)
+      for (std::size_t b = a + 1; b < face.size(); ++b) {
+        auto shared = Polytope<D>::intersect(face[a]->planes, face[b]->planes);
+        if (!P.on_common_edge(shared)) continue;
+        QP<D> ab, av;
+        for (std::size_t j = 0; j < D; ++j)
+          ab[j] = face[b]->x[j] - face[a]->x[j], av[j] = q[v][j] - face[a]->x[j];
+        Q t = dot<D>(av, ab) / dot<D>(ab, ab);
+        if (t <= 0 || t >= 1) continue;
+        QP<D> p;
+        for (std::size_t j = 0; j < D; ++j) p[j] = face[a]->x[j] + t * ab[j];
+        d2 = std::min(d2, dist2<D>(p, q[v]));
+      }
+    return d2;
+  }
+
+  // Whether dist(v, F)² ≤ bound (< if strict), F = P ∩ {plane id} a nonempty face of P, any D, by
+  // KKT points: the nearest point x* lies in the relative interior of the smallest face G of P
+  // containing it, G ⊆ F, so x* is the projection of v onto aff(G) = ∩ of the planes tight on G
+  // (id among them). Those planes all pass through any vertex w of G, and a row basis of them
+  // containing id has ≤ D − 1 rows unless G is a vertex. So dist(v, F) is the least of |vw| over
+  // the face's vertices w and of |vx| over the projections x of v onto {id} ∪ T, T ⊆ planes(w) \ {id},
+  // |T| ≤ D − 2, independent rows, that lie in P (such an x is a point of F, so no candidate
+  // undercuts the true distance). Candidates farther than the bound are not tested for P.
+  bool face_within_kkt(const Polytope<D>& P, int id,
+                       const std::vector<const typename Polytope<D>::Vtx*>& face, std::size_t v,
+                       const Q& bound, bool strict) const {
+    auto within = [&](const Q& d2) { return strict ? d2 < bound : d2 <= bound; };
+    for (auto* w : face)
+      if (within(dist2<D>(w->x, q[v]))) return true;
+    std::set<std::vector<int>> tried;
+    std::vector<int> T, others;
+    bool found = false;
+    auto visit = [&] {
+      std::vector<int> rows{id};
+      rows.insert(rows.end(), T.begin(), T.end());
+      if (!tried.insert(rows).second) return;
+      QP<D> x;
+      if (project(P, rows, q[v], x) && within(dist2<D>(x, q[v])) && P.contains(x)) found = true;
+    };
+    // Subsets of `others` of size ≤ D − 2, in increasing index order (T stays sorted).
+    auto rec = [&](auto&& self, std::size_t from) -> void {
+      visit();
+      if (found || T.size() + 2 > D) return;
+      for (std::size_t i = from; i < others.size() && !found; ++i) {
+        T.push_back(others[i]);
+        self(self, i + 1);
+        T.pop_back();
+      }
+    };
+    for (auto* w : face) {
+      others.clear();
+      for (int p : w->planes)
+        if (p != id) others.push_back(p);
+      rec(rec, 0);
+      if (found) return true;
+    }
+    return false;
+  }
+
+  // Orthogonal projection of y onto {x : n_i·x = h_i, i ∈ rows} (x = y − Σ λ_i n_i with
+  // G λ = (n_i·y − h_i), G the Gram matrix). False if the rows are linearly dependent.
+  static bool project(const Polytope<D>& P, const std::vector<int>& rows, const QP<D>& y, QP<D>& x) {
+    const std::size_t r = rows.size();
+    std::vector<std::vector<Q>> G(r, std::vector<Q>(r + 1));
+    for (std::size_t i = 0; i < r; ++i) {
+      const auto& hi = P.halves[static_cast<std::size_t>(rows[i])];
+      for (std::size_t j = 0; j < r; ++j)
+        G[i][j] = dot<D>(hi.n, P.halves[static_cast<std::size_t>(rows[j])].n);
+      G[i][r] = dot<D>(hi.n, y) - hi.h;
+    }
+    for (std::size_t c = 0; c < r; ++c) {  // Gauss–Jordan; G is singular iff rows are dependent
+      std::size_t piv = c;
+      while (piv < r && G[piv][c] == 0) ++piv;
+      if (piv == r) return false;
+      std::swap(G[piv], G[c]);
+      for (std::size_t i = 0; i < r; ++i) {
+        if (i == c || G[i][c] == 0) continue;
+        Q f = G[i][c] / G[c][c];
+        for (std::size_t j = c; j <= r; ++j) G[i][j] -= f * G[c][j];
+      }
+    }
+    x = y;
+    for (std::size_t i = 0; i < r; ++i) {
+      Q lambda = G[i][r] / G[i][i];
+      const auto& n = P.halves[static_cast<std::size_t>(rows[i])].n;
+      for (std::size_t k = 0; k < D; ++k) x[k] -= lambda * n[k];
+    }
+    return true;
   }
 };
 
@@ -408,12 +489,7 @@ template <std::size_t D>
 std::vector<std::uint32_t> CellOracle<D>::beta_neighbors_sq(std::size_t v, const exact::Dyadic& num,
                                                             const exact::Dyadic& den,
                                                             BetaOptions opt) const {
-  if constexpr (D <= 3) {
-    return impl_->beta(v, detail::to_q(num) / detail::to_q(den), opt);
-  } else {
-    (void)v, (void)num, (void)den, (void)opt;
-    throw InputError("β-clipped neighbour oracle: only D = 2, 3");
-  }
+  return impl_->beta(v, detail::to_q(num) / detail::to_q(den), opt);
 }
 template <std::size_t D>
 std::string CellOracle<D>::far_squared_brute_force(std::size_t v) const {
@@ -548,6 +624,12 @@ std::vector<std::uint32_t> beta_clipped_voronoi_neighbors_oracle_3d(const std::v
                                                                     const exact::Dyadic& beta,
                                                                     BetaOptions opt) {
   return CellOracle<3>(points).beta_neighbors(v, beta, opt);
+}
+std::vector<std::uint32_t> beta_clipped_voronoi_neighbors_oracle_4d(const std::vector<XPoint<4>>& points,
+                                                                    std::size_t v,
+                                                                    const exact::Dyadic& beta,
+                                                                    BetaOptions opt) {
+  return CellOracle<4>(points).beta_neighbors(v, beta, opt);
 }
 
 #define KMR_WS_INSTANTIATE(D)                                                                  \

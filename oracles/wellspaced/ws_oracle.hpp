@@ -20,9 +20,12 @@
 //  * beta_clipped_voronoi_neighbors: u is a β-clipped Voronoi neighbour of v iff the β-clipped
 //    cell Vor(v) ∩ B(v, β·NN(v)) contains a point equidistant from v and u (§3.1.1), i.e. the
 //    Voronoi face F_u = Vor(v) ∩ bisector(v,u) is nonempty and dist(v, F_u) ≤ β·NN(v) (or < with
-//    strict). A face touching the cell in a single point (cocircular inputs) counts. D = 2, 3.
+//    strict). A face touching the cell in a single point (cocircular inputs) counts. D = 2, 3, 4.
 //    Candidates are all sites within 2β·NN(v) of v, gathered by a search of CGAL's Delaunay graph
 //    (so sites that touch the cell but are not edges of CGAL's chosen triangulation are found).
+//    dist(v, F_u) is exact: in 2D/3D the midpoint of uv, a vertex or an edge point of F_u; in 4D
+//    (and on request in 2D/3D) the least of the KKT points, the projections of v onto the affine
+//    hulls of the faces of F_u that lie in the cell.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -79,6 +82,7 @@ struct BetaOptions {
   bool clip_to_domain = true;
   bool strict = false;
   bool brute_force = false;  // candidates: every other site (self-tests of the oracle)
+  bool kkt_face_distance = false;  // D = 2, 3: dist(v, F_u) by KKT points (always so in 4D)
 };
 
 // Per-vertex exact geometry of one point set: Delaunay neighbours (CGAL), NN², clipped cells.
@@ -97,7 +101,7 @@ class CellOracle {
   std::string far_squared(std::size_t v) const;          // R_v², exact "p/q"
   // ρ-well-spacedness of one vertex (exact).
   bool well_spaced(std::size_t v, const Rho& rho) const;
-  // β-clipped Voronoi neighbours of v (sorted indices). D = 2, 3 only.
+  // β-clipped Voronoi neighbours of v (sorted indices). D = 2, 3, 4.
   std::vector<std::uint32_t> beta_neighbors(std::size_t v, const exact::Dyadic& beta,
                                             BetaOptions opt = {}) const;
   // Same with β given by β² = num/den (e.g. β = √2).
@@ -141,14 +145,15 @@ std::vector<std::uint32_t> beta_clipped_voronoi_neighbors_oracle_2d(
 std::vector<std::uint32_t> beta_clipped_voronoi_neighbors_oracle_3d(
     const std::vector<XPoint<3>>& points, std::size_t v, const exact::Dyadic& beta,
     BetaOptions opt = {});
+std::vector<std::uint32_t> beta_clipped_voronoi_neighbors_oracle_4d(
+    const std::vector<XPoint<4>>& points, std::size_t v, const exact::Dyadic& beta,
+    BetaOptions opt = {});
 
 // Raw CGAL Delaunay adjacency (sorted neighbour lists; input must be duplicate-free).
-// D = 2, 3: Delaunay_triangulation_2/3<Epeck>; D = 4: Delaunay_triangulation<Epeck_d<4>>.
+// D = 2, 3: Delaunay_triangulation_2/3<Epeck>; D = 4: Delaunay_triangulation<Epeck_d<4>> (always
+// built: CMake refuses to configure the oracles without Eigen3).
 template <std::size_t D>
 std::vector<std::vector<std::uint32_t>> cgal_delaunay_adjacency(const std::vector<XPoint<D>>& pts);
-
-// False when the 4D CGAL translation unit was not built (Eigen3 missing).
-bool cgal_4d_available();
 
 // For each query, the index of a nearest site (CGAL nearest_vertex, exact predicates). D = 2, 3.
 template <std::size_t D>
