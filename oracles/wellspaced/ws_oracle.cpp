@@ -262,13 +262,30 @@ struct CellOracle<D>::Impl {
   }
 
   std::vector<std::uint32_t> beta(std::size_t v, const Q& beta_sq, BetaOptions opt) const {
+    std::vector<std::uint32_t> cand;
+    std::vector<int> plane_of;
+    Polytope<D> P = clipped_cell(v, beta_sq, opt, cand, plane_of);
+    const Q bound = beta_sq * nn2[v];
+    std::vector<std::uint32_t> out;
+    for_each_face(P, cand, plane_of, [&](std::uint32_t u, int id, const auto& face) {
+      if (within(face_dist2(P, id, face, v, u, opt.face_distance, &bound, opt.strict), bound,
+                 opt.strict))
+        out.push_back(u);
+    });
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  // The cell of v cut by the bisectors of all candidates (cand[k] has plane id plane_of[k]).
+  Polytope<D> clipped_cell(std::size_t v, const Q& beta_sq, BetaOptions opt,
+                           std::vector<std::uint32_t>& cand, std::vector<int>& plane_of) const {
     // Candidates: every point u with |uv| ≤ 2β·NN(v) (a face point x with |xv| ≤ β·NN(v) has
     // |uv| ≤ |ux| + |xv| = 2|xv|). They are found by a search of CGAL's Delaunay graph from v
     // restricted to that ball, which reaches all of them (greedy routing: every site u ≠ v has a
     // Delaunay neighbour closer to v). Using all candidates' bisectors, not only the chosen
     // triangulation's edges, finds the neighbours that merely touch the cell (cospherical sites).
     const Q r2 = 4 * beta_sq * nn2[v];
-    std::vector<std::uint32_t> cand;
+    cand.clear();
     if (opt.brute_force) {
       for (std::size_t u = 0; u < q.size(); ++u)
         if (u != v) cand.push_back(static_cast<std::uint32_t>(u));
@@ -302,27 +319,81 @@ struct CellOracle<D>::Impl {
       for (std::size_t k = 0; k < D; ++k) lo[k] = q[v][k] - s, hi[k] = q[v][k] + s;
       P = Polytope<D>(lo, hi);
     }
-    std::vector<int> plane_of(cand.size());
+    plane_of.assign(cand.size(), 0);
     for (std::size_t k = 0; k < cand.size(); ++k) plane_of[k] = P.clip(bisector<D>(q[v], q[cand[k]]));
-    const Q bound = beta_sq * nn2[v];
-    const bool kkt = D >= 4 || opt.kkt_face_distance;
-    std::vector<std::uint32_t> out;
+    return P;
+  }
+
+  static bool within(const Q& d2, const Q& bound, bool strict) {
+    return d2 >= 0 && (strict ? d2 < bound : d2 <= bound);
+  }
+
+  using Face = std::vector<const typename Polytope<D>::Vtx*>;
+
+  // f(u, plane id, vertices of F_u) for each candidate u whose face F_u = P ∩ bisector(v, u) is
+  // nonempty (the others are not Voronoi neighbours within the clipping box).
+  template <class F>
+  static void for_each_face(const Polytope<D>& P, const std::vector<std::uint32_t>& cand,
+                            const std::vector<int>& plane_of, F&& f) {
     for (std::size_t k = 0; k < cand.size(); ++k) {
       const int id = plane_of[k];
-      const QP<D>& u = q[cand[k]];
-      std::vector<const typename Polytope<D>::Vtx*> face;
+      Face face;
       for (const auto& w : P.vs)
         if (std::binary_search(w.planes.begin(), w.planes.end(), id)) face.push_back(&w);
-      if (face.empty()) continue;  // not a Voronoi neighbour (within the clipping box)
-      bool in;
-      if (kkt) {
-        in = face_within_kkt(P, id, face, v, bound, opt.strict);
-      } else {
-        const Q d2 = face_dist2_23(P, face, v, u);
-        in = opt.strict ? d2 < bound : d2 <= bound;
-      }
-      if (in) out.push_back(cand[k]);
+      if (!face.empty()) f(cand[k], id, face);
     }
+  }
+
+  // dist(v, F_u)² by the chosen method; with stop_at, any value within it may be returned as soon
+  // as one is found (the decision is the same).
+  Q face_dist2(const Polytope<D>& P, int id, const Face& face, std::size_t v, std::uint32_t u,
+               FaceDistance how, const Q* stop_at, bool strict) const {
+    if (how == FaceDistance::Auto) how = D <= 3 ? FaceDistance::Edges23 : FaceDistance::KktFaceVertices;
+    switch (how) {
+      case FaceDistance::Edges23:
+        KMR_CHECK(D <= 3, "the edge scan is the face distance for D = 2, 3 only");
+        return face_dist2_23(P, face, v, q[u]);
+      case FaceDistance::KktFaceVertices: {
+        // Vertices of F_u, then subsets of the planes through one face vertex, |T| ≤ D − 2.
+        Q best = -1;
+        for (auto* w : face) {
+          Q d = dist2<D>(w->x, q[v]);
+          if (best < 0 || d < best) best = d;
+        }
+        if (stop_at && within(best, *stop_at, strict)) return best;
+        std::vector<std::vector<int>> pools;
+        for (auto* w : face) {
+          pools.emplace_back();
+          for (int p : w->planes)
+            if (p != id) pools.back().push_back(p);
+        }
+        return kkt_min(P, id, pools, D - 2, q[v], best, stop_at, strict);
+      }
+      case FaceDistance::KktAllFacePlanes: {
+        // Self-test form: every subset (|T| ≤ D − 1) of all planes meeting F_u, no vertex distances.
+        std::set<int> all;
+        for (auto* w : face)
+          for (int p : w->planes)
+            if (p != id) all.insert(p);
+        return kkt_min(P, id, {std::vector<int>(all.begin(), all.end())}, D - 1, q[v], Q(-1), stop_at,
+                       strict);
+      }
+      case FaceDistance::Auto: break;
+    }
+    KMR_CHECK(false, "unknown face distance method");
+    return -1;
+  }
+
+  // Exact dist(v, F_u)² for every candidate u with a nonempty face (self-tests).
+  std::vector<std::pair<std::uint32_t, Q>> face_distances(std::size_t v, const Q& beta_sq,
+                                                          BetaOptions opt) const {
+    std::vector<std::uint32_t> cand;
+    std::vector<int> plane_of;
+    Polytope<D> P = clipped_cell(v, beta_sq, opt, cand, plane_of);
+    std::vector<std::pair<std::uint32_t, Q>> out;
+    for_each_face(P, cand, plane_of, [&](std::uint32_t u, int id, const auto& face) {
+      out.emplace_back(u, face_dist2(P, id, face, v, u, opt.face_distance, nullptr, opt.strict));
+    });
     std::sort(out.begin(), out.end());
     return out;
   }
@@ -353,48 +424,49 @@ struct CellOracle<D>::Impl {
     return d2;
   }
 
-  // Whether dist(v, F)² ≤ bound (< if strict), F = P ∩ {plane id} a nonempty face of P, any D, by
-  // KKT points: the nearest point x* lies in the relative interior of the smallest face G of P
-  // containing it, G ⊆ F, so x* is the projection of v onto aff(G) = ∩ of the planes tight on G
-  // (id among them). Those planes all pass through any vertex w of G, and a row basis of them
-  // containing id has ≤ D − 1 rows unless G is a vertex. So dist(v, F) is the least of |vw| over
-  // the face's vertices w and of |vx| over the projections x of v onto {id} ∪ T, T ⊆ planes(w) \ {id},
-  // |T| ≤ D − 2, independent rows, that lie in P (such an x is a point of F, so no candidate
-  // undercuts the true distance). Candidates farther than the bound are not tested for P.
-  bool face_within_kkt(const Polytope<D>& P, int id,
-                       const std::vector<const typename Polytope<D>::Vtx*>& face, std::size_t v,
-                       const Q& bound, bool strict) const {
-    auto within = [&](const Q& d2) { return strict ? d2 < bound : d2 <= bound; };
-    for (auto* w : face)
-      if (within(dist2<D>(w->x, q[v]))) return true;
+  // KKT points of min |vx|² over F = P ∩ {plane id}, any D. The nearest point x* lies in the
+  // relative interior of the smallest face G of P containing it, G ⊆ F, so x* is the projection of
+  // v onto aff(G) = ∩ of the planes tight on G (id among them). Those planes all pass through each
+  // vertex w of G, and a row basis of them containing id has ≤ D − 1 rows unless G is a vertex. So
+  // dist(v, F)² is the least of |vw|² over the vertices w of F and of |vx|² over the projections x
+  // of v onto {id} ∪ T, T ⊆ planes(w) \ {id}, |T| ≤ D − 2, independent rows, that lie in P; each
+  // such x is a point of F, so no candidate undercuts the true distance. kkt_min takes subsets T of
+  // each pool (|T| ≤ max_t) starting from `best` (−1: none yet); candidates not below the current
+  // best (or, with stop_at, not within it) are not tested for P.
+  static Q kkt_min(const Polytope<D>& P, int id, const std::vector<std::vector<int>>& pools,
+                   std::size_t max_t, const QP<D>& y, Q best, const Q* stop_at, bool strict) {
     std::set<std::vector<int>> tried;
-    std::vector<int> T, others;
-    bool found = false;
+    std::vector<int> T;
+    const std::vector<int>* pool = nullptr;
+    bool done = false;
     auto visit = [&] {
       std::vector<int> rows{id};
       rows.insert(rows.end(), T.begin(), T.end());
       if (!tried.insert(rows).second) return;
       QP<D> x;
-      if (project(P, rows, q[v], x) && within(dist2<D>(x, q[v])) && P.contains(x)) found = true;
+      if (!project(P, rows, y, x)) return;
+      Q d = dist2<D>(x, y);
+      if (best >= 0 && d >= best) return;
+      if (stop_at && !within(d, *stop_at, strict)) return;
+      if (!P.contains(x)) return;
+      best = d;
+      if (stop_at) done = true;
     };
-    // Subsets of `others` of size ≤ D − 2, in increasing index order (T stays sorted).
-    auto rec = [&](auto&& self, std::size_t from) -> void {
+    auto rec = [&](auto&& self, std::size_t from) -> void {  // T stays sorted
       visit();
-      if (found || T.size() + 2 > D) return;
-      for (std::size_t i = from; i < others.size() && !found; ++i) {
-        T.push_back(others[i]);
+      if (done || T.size() >= max_t) return;
+      for (std::size_t i = from; i < pool->size() && !done; ++i) {
+        T.push_back((*pool)[i]);
         self(self, i + 1);
         T.pop_back();
       }
     };
-    for (auto* w : face) {
-      others.clear();
-      for (int p : w->planes)
-        if (p != id) others.push_back(p);
+    for (const auto& p : pools) {
+      pool = &p;
       rec(rec, 0);
-      if (found) return true;
+      if (done) break;
     }
-    return false;
+    return best;
   }
 
   // Orthogonal projection of y onto {x : n_i·x = h_i, i ∈ rows} (x = y − Σ λ_i n_i with
@@ -490,6 +562,14 @@ std::vector<std::uint32_t> CellOracle<D>::beta_neighbors_sq(std::size_t v, const
                                                             const exact::Dyadic& den,
                                                             BetaOptions opt) const {
   return impl_->beta(v, detail::to_q(num) / detail::to_q(den), opt);
+}
+template <std::size_t D>
+std::vector<std::pair<std::uint32_t, std::string>> CellOracle<D>::face_distances_squared(
+    std::size_t v, const exact::Dyadic& beta, BetaOptions opt) const {
+  std::vector<std::pair<std::uint32_t, std::string>> out;
+  for (const auto& [u, d2] : impl_->face_distances(v, detail::to_q(beta * beta), opt))
+    out.emplace_back(u, detail::to_text(d2));
+  return out;
 }
 template <std::size_t D>
 std::string CellOracle<D>::far_squared_brute_force(std::size_t v) const {

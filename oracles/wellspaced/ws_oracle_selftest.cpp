@@ -6,7 +6,7 @@
 
 #include <cmath>
 #include <random>
-#include <type_traits>
+#include <utility>
 
 #include "exact/error.hpp"
 #include "ws_exact_q.hpp"
@@ -311,31 +311,59 @@ TEST(WsOracle, L3_2_1_BetaNeighboursFromDelaunaySearchEqualBruteForce4D) {
   expect_beta_brute_force<4>(grid<4>(3, false));
 }
 
-TEST(WsOracle, L3_2_1_KktFaceDistanceEqualsEdgeScan2D3D) {
-  RecordProperty("claim", "L3.2.1");
-  // The 4D face distance (KKT points over the faces of F_u) equals, in 2D and 3D, the hand-written
-  // one (midpoint, vertices, edge points), which the hand-derived grids above pin down.
-  auto check = [](const auto& O, std::size_t n, auto dim) {
-    constexpr std::size_t D = decltype(dim)::value;
-    for (double beta : {0.5, 0.75, 1.0, 2.0, 4.0})
-      for (bool domain : {true, false})
-        for (std::size_t v = 0; v < n; v += 2) {
-          ws::BetaOptions a{domain, false}, b{domain, false};
-          b.kkt_face_distance = true;
-          ASSERT_EQ(O.beta_neighbors(v, dy(beta), a), O.beta_neighbors(v, dy(beta), b))
-              << D << "D v " << v << " beta " << beta << " domain " << domain;
+// Exact dist(v, F_u)² by each method in `how`, all equal, for every candidate u of every `stride`-th
+// vertex, for several β and both domain conventions.
+template <std::size_t D>
+void expect_face_distances_agree(const std::vector<ws::DPoint<D>>& pts,
+                                 std::initializer_list<ws::FaceDistance> how, std::size_t stride,
+                                 std::initializer_list<double> betas) {
+  ws::CellOracle<D> O(X<D>(pts));
+  for (double beta : betas)
+    for (bool domain : {true, false})
+      for (std::size_t v = 0; v < pts.size(); v += stride) {
+        std::vector<std::vector<std::pair<std::uint32_t, std::string>>> got;
+        for (auto h : how) {
+          ws::BetaOptions o{domain, false};
+          o.face_distance = h;
+          got.push_back(O.face_distances_squared(v, dy(beta), o));
         }
-  };
+        for (std::size_t i = 1; i < got.size(); ++i)
+          ASSERT_EQ(got[0], got[i]) << D << "D v " << v << " beta " << beta << " domain " << domain
+                                    << " method " << i;
+        ASSERT_FALSE(got[0].empty());
+      }
+}
+
+TEST(WsOracle, L3_2_1_FaceDistanceMethodsAgree2D3D) {
+  RecordProperty("claim", "L3.2.1");
+  // The KKT face distance used in 4D equals, in 2D and 3D, the hand-written one (midpoint, vertices,
+  // edge points; pinned down by the hand-derived grids above), exactly, for every candidate face.
+  using F = ws::FaceDistance;
   for (auto kind : ws::gen::kAllKinds) {
-    auto p2 = ws::gen::make<2>(kind, 40, 13);
-    check(ws::CellOracle<2>(X<2>(p2)), p2.size(), std::integral_constant<std::size_t, 2>{});
-    auto p3 = ws::gen::make<3>(kind, 30, 13);
-    check(ws::CellOracle<3>(X<3>(p3)), p3.size(), std::integral_constant<std::size_t, 3>{});
+    expect_face_distances_agree<2>(ws::gen::make<2>(kind, 40, 13),
+                                   {F::Edges23, F::KktFaceVertices, F::KktAllFacePlanes}, 2, {1.0, 3.0});
+    expect_face_distances_agree<3>(ws::gen::make<3>(kind, 30, 13),
+                                   {F::Edges23, F::KktFaceVertices, F::KktAllFacePlanes}, 2, {1.0, 3.0});
   }
-  auto g2 = grid<2>(7, false);
-  check(ws::CellOracle<2>(X<2>(g2)), g2.size(), std::integral_constant<std::size_t, 2>{});
-  auto g3 = grid<3>(4, false);
-  check(ws::CellOracle<3>(X<3>(g3)), g3.size(), std::integral_constant<std::size_t, 3>{});
+  expect_face_distances_agree<2>(grid<2>(7, false), {F::Edges23, F::KktFaceVertices, F::KktAllFacePlanes},
+                                 2, {1.0, 3.0});
+  expect_face_distances_agree<3>(grid<3>(4, false), {F::Edges23, F::KktFaceVertices, F::KktAllFacePlanes},
+                                 2, {1.0, 3.0});
+}
+
+TEST(WsOracle, L3_2_1_FaceDistanceFromFaceVerticesEqualsAllPlanes4D) {
+  RecordProperty("claim", "L3.2.1");
+  // 4D: the KKT points over subsets of the planes through one face vertex (|T| ≤ 2, what the
+  // oracle uses) give the same exact distances as all subsets of all planes meeting the face
+  // (|T| ≤ 3, no vertex bookkeeping beyond which planes meet F_u).
+  using F = ws::FaceDistance;
+  for (auto kind : {ws::gen::Kind::Uniform, ws::gen::Kind::Boundary, ws::gen::Kind::ClosePairs,
+                    ws::gen::Kind::Line})
+    expect_face_distances_agree<4>(ws::gen::make<4>(kind, 14, 17),
+                                   {F::KktFaceVertices, F::KktAllFacePlanes}, 4, {2.0});
+  // The 3^4 grid: vertices 0 (a corner), 40 (the centre), 80 (the opposite corner).
+  expect_face_distances_agree<4>(grid<4>(3, false), {F::KktFaceVertices, F::KktAllFacePlanes}, 40,
+                                 {0.75});
 }
 
 // ---- Size conformity (Lemma 3.3.3) ----
