@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstdint>
 #include <random>
+#include <sstream>
 #include <tuple>
 
 #include "wellspaced/well_spaced_set.hpp"
@@ -158,11 +159,13 @@ std::string neighbour_mismatch(std::vector<std::size_t> got, const std::vector<s
   std::sort(got.begin(), got.end());
   std::vector<std::size_t> w(want.begin(), want.end());
   if (got == w) return {};
-  std::string r = "library {";
-  for (auto i : got) r += " " + std::to_string(i);
-  r += " } oracle {";
-  for (auto i : w) r += " " + std::to_string(i);
-  return r + " }";
+  std::ostringstream r;
+  r << "library {";
+  for (auto i : got) r << ' ' << i;
+  r << " } oracle {";
+  for (auto i : w) r << ' ' << i;
+  r << " }";
+  return r.str();
 }
 
 template <std::size_t D>
