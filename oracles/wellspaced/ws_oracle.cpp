@@ -21,16 +21,6 @@ namespace kmr::oracle::ws {
 
 using detail::Q;
 
-#ifndef KMR_WS_HAVE_CGAL_4D
-template <>
-std::vector<std::vector<std::uint32_t>> cgal_delaunay_adjacency<4>(const std::vector<XPoint<4>>&) {
-  throw InputError("4D oracle unavailable: CGAL's dD Delaunay needs Eigen3 (libeigen3-dev)");
-}
-bool cgal_4d_available() { return false; }
-#else
-bool cgal_4d_available() { return true; }
-#endif
-
 double Rho::approx() const { return std::sqrt(sq_num.to_double() / sq_den.to_double()); }
 
 template <std::size_t D>
@@ -272,14 +262,30 @@ struct CellOracle<D>::Impl {
   }
 
   std::vector<std::uint32_t> beta(std::size_t v, const Q& beta_sq, BetaOptions opt) const {
-    KMR_CHECK(D <= 3, "β-clipped neighbours: D = 2, 3");
+    std::vector<std::uint32_t> cand;
+    std::vector<int> plane_of;
+    Polytope<D> P = clipped_cell(v, beta_sq, opt, cand, plane_of);
+    const Q bound = beta_sq * nn2[v];
+    std::vector<std::uint32_t> out;
+    for_each_face(P, cand, plane_of, [&](std::uint32_t u, int id, const auto& face) {
+      if (within(face_dist2(P, id, face, v, u, opt.face_distance, &bound, opt.strict), bound,
+                 opt.strict))
+        out.push_back(u);
+    });
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  // The cell of v cut by the bisectors of all candidates (cand[k] has plane id plane_of[k]).
+  Polytope<D> clipped_cell(std::size_t v, const Q& beta_sq, BetaOptions opt,
+                           std::vector<std::uint32_t>& cand, std::vector<int>& plane_of) const {
     // Candidates: every point u with |uv| ≤ 2β·NN(v) (a face point x with |xv| ≤ β·NN(v) has
     // |uv| ≤ |ux| + |xv| = 2|xv|). They are found by a search of CGAL's Delaunay graph from v
     // restricted to that ball, which reaches all of them (greedy routing: every site u ≠ v has a
     // Delaunay neighbour closer to v). Using all candidates' bisectors, not only the chosen
     // triangulation's edges, finds the neighbours that merely touch the cell (cospherical sites).
     const Q r2 = 4 * beta_sq * nn2[v];
-    std::vector<std::uint32_t> cand;
+    cand.clear();
     if (opt.brute_force) {
       for (std::size_t u = 0; u < q.size(); ++u)
         if (u != v) cand.push_back(static_cast<std::uint32_t>(u));
@@ -296,8 +302,13 @@ struct CellOracle<D>::Impl {
           stack.push_back(u);
         }
       }
-      std::sort(cand.begin(), cand.end());
     }
+    // Nearest candidates first (the polytope shrinks early); the final polytope, and the planes
+    // recorded at each of its vertices, do not depend on the order.
+    std::sort(cand.begin(), cand.end(), [&](std::uint32_t a, std::uint32_t b) {
+      Q da = dist2<D>(q[a], q[v]), db = dist2<D>(q[b], q[v]);
+      return da < db || (da == db && a < b);
+    });
     Polytope<D> P = unit_box();
     if (!opt.clip_to_domain) {
       // A box containing the closed ball B(v, β·NN(v)): half side max(1, β²)·|v − nn|_1.
@@ -308,43 +319,185 @@ struct CellOracle<D>::Impl {
       for (std::size_t k = 0; k < D; ++k) lo[k] = q[v][k] - s, hi[k] = q[v][k] + s;
       P = Polytope<D>(lo, hi);
     }
-    std::vector<int> plane_of(cand.size());
+    plane_of.assign(cand.size(), 0);
     for (std::size_t k = 0; k < cand.size(); ++k) plane_of[k] = P.clip(bisector<D>(q[v], q[cand[k]]));
-    const Q bound = beta_sq * nn2[v];
-    std::vector<std::uint32_t> out;
+    return P;
+  }
+
+  static bool within(const Q& d2, const Q& bound, bool strict) {
+    return d2 >= 0 && (strict ? d2 < bound : d2 <= bound);
+  }
+
+  using Face = std::vector<const typename Polytope<D>::Vtx*>;
+
+  // f(u, plane id, vertices of F_u) for each candidate u whose face F_u = P ∩ bisector(v, u) is
+  // nonempty (the others are not Voronoi neighbours within the clipping box).
+  template <class F>
+  static void for_each_face(const Polytope<D>& P, const std::vector<std::uint32_t>& cand,
+                            const std::vector<int>& plane_of, F&& f) {
     for (std::size_t k = 0; k < cand.size(); ++k) {
       const int id = plane_of[k];
-      const QP<D>& u = q[cand[k]];
-      std::vector<const typename Polytope<D>::Vtx*> face;
+      Face face;
       for (const auto& w : P.vs)
         if (std::binary_search(w.planes.begin(), w.planes.end(), id)) face.push_back(&w);
-      if (face.empty()) continue;  // not a Voronoi neighbour (within the clipping box)
-      QP<D> m;
-      for (std::size_t j = 0; j < D; ++j) m[j] = (q[v][j] + u[j]) / 2;
-      Q d2;
-      if (P.contains(m)) {
-        d2 = dist2<D>(m, q[v]);
-      } else {
-        d2 = dist2<D>(face[0]->x, q[v]);
-        for (auto* w : face) d2 = std::min(d2, dist2<D>(w->x, q[v]));
-        for (std::size_t a = 0; a < face.size(); ++a)
-          for (std::size_t b = a + 1; b < face.size(); ++b) {
-            auto shared = Polytope<D>::intersect(face[a]->planes, face[b]->planes);
-            if (!P.on_common_edge(shared)) continue;
-            QP<D> ab, av;
-            for (std::size_t j = 0; j < D; ++j)
-              ab[j] = face[b]->x[j] - face[a]->x[j], av[j] = q[v][j] - face[a]->x[j];
-            Q t = dot<D>(av, ab) / dot<D>(ab, ab);
-            if (t <= 0 || t >= 1) continue;
-            QP<D> p;
-            for (std::size_t j = 0; j < D; ++j) p[j] = face[a]->x[j] + t * ab[j];
-            d2 = std::min(d2, dist2<D>(p, q[v]));
-          }
-      }
-      if (opt.strict ? d2 < bound : d2 <= bound) out.push_back(cand[k]);
+      if (!face.empty()) f(cand[k], id, face);
     }
+  }
+
+  // dist(v, F_u)² by the chosen method; with stop_at, any value within it may be returned as soon
+  // as one is found (the decision is the same).
+  Q face_dist2(const Polytope<D>& P, int id, const Face& face, std::size_t v, std::uint32_t u,
+               FaceDistance how, const Q* stop_at, bool strict) const {
+    if (how == FaceDistance::Auto) how = D <= 3 ? FaceDistance::Edges23 : FaceDistance::KktFaceVertices;
+    switch (how) {
+      case FaceDistance::Edges23:
+        KMR_CHECK(D <= 3, "the edge scan is the face distance for D = 2, 3 only");
+        return face_dist2_23(P, face, v, q[u]);
+      case FaceDistance::KktFaceVertices: {
+        // Vertices of F_u, then subsets of the planes through one face vertex, |T| ≤ D − 2.
+        Q best = -1;
+        for (auto* w : face) {
+          Q d = dist2<D>(w->x, q[v]);
+          if (best < 0 || d < best) best = d;
+        }
+        if (stop_at && within(best, *stop_at, strict)) return best;
+        std::vector<std::vector<int>> pools;
+        for (auto* w : face) {
+          pools.emplace_back();
+          for (int p : w->planes)
+            if (p != id) pools.back().push_back(p);
+        }
+        return kkt_min(P, id, pools, D - 2, q[v], best, stop_at, strict);
+      }
+      case FaceDistance::KktAllFacePlanes: {
+        // Self-test form: every subset (|T| ≤ D − 1) of all planes meeting F_u, no vertex distances.
+        std::set<int> all;
+        for (auto* w : face)
+          for (int p : w->planes)
+            if (p != id) all.insert(p);
+        return kkt_min(P, id, {std::vector<int>(all.begin(), all.end())}, D - 1, q[v], Q(-1), stop_at,
+                       strict);
+      }
+      case FaceDistance::Auto: break;
+    }
+    KMR_CHECK(false, "unknown face distance method");
+    return -1;
+  }
+
+  // Exact dist(v, F_u)² for every candidate u with a nonempty face (self-tests).
+  std::vector<std::pair<std::uint32_t, Q>> face_distances(std::size_t v, const Q& beta_sq,
+                                                          BetaOptions opt) const {
+    std::vector<std::uint32_t> cand;
+    std::vector<int> plane_of;
+    Polytope<D> P = clipped_cell(v, beta_sq, opt, cand, plane_of);
+    std::vector<std::pair<std::uint32_t, Q>> out;
+    for_each_face(P, cand, plane_of, [&](std::uint32_t u, int id, const auto& face) {
+      out.emplace_back(u, face_dist2(P, id, face, v, u, opt.face_distance, nullptr, opt.strict));
+    });
     std::sort(out.begin(), out.end());
     return out;
+  }
+
+  // dist(v, F_u)², F_u = P ∩ bisector(v, u) (D = 2, 3): the midpoint of uv if it lies in P (the
+  // projection of v onto the bisector), else the nearest point lies on the boundary of F_u, a
+  // vertex or a point of an edge of F_u (F_u has dimension ≤ 2).
+  Q face_dist2_23(const Polytope<D>& P, const std::vector<const typename Polytope<D>::Vtx*>& face,
+                  std::size_t v, const QP<D>& u) const {
+    QP<D> m;
+    for (std::size_t j = 0; j < D; ++j) m[j] = (q[v][j] + u[j]) / 2;
+    if (P.contains(m)) return dist2<D>(m, q[v]);
+    Q d2 = dist2<D>(face[0]->x, q[v]);
+    for (auto* w : face) d2 = std::min(d2, dist2<D>(w->x, q[v]));
+    for (std::size_t a = 0; a < face.size(); ++a)
+      for (std::size_t b = a + 1; b < face.size(); ++b) {
+        auto shared = Polytope<D>::intersect(face[a]->planes, face[b]->planes);
+        if (!P.on_common_edge(shared)) continue;
+        QP<D> ab, av;
+        for (std::size_t j = 0; j < D; ++j)
+          ab[j] = face[b]->x[j] - face[a]->x[j], av[j] = q[v][j] - face[a]->x[j];
+        Q t = dot<D>(av, ab) / dot<D>(ab, ab);
+        if (t <= 0 || t >= 1) continue;
+        QP<D> p;
+        for (std::size_t j = 0; j < D; ++j) p[j] = face[a]->x[j] + t * ab[j];
+        d2 = std::min(d2, dist2<D>(p, q[v]));
+      }
+    return d2;
+  }
+
+  // KKT points of min |vx|² over F = P ∩ {plane id}, any D. The nearest point x* lies in the
+  // relative interior of the smallest face G of P containing it, G ⊆ F, so x* is the projection of
+  // v onto aff(G) = ∩ of the planes tight on G (id among them). Those planes all pass through each
+  // vertex w of G, and a row basis of them containing id has ≤ D − 1 rows unless G is a vertex. So
+  // dist(v, F)² is the least of |vw|² over the vertices w of F and of |vx|² over the projections x
+  // of v onto {id} ∪ T, T ⊆ planes(w) \ {id}, |T| ≤ D − 2, independent rows, that lie in P; each
+  // such x is a point of F, so no candidate undercuts the true distance. kkt_min takes subsets T of
+  // each pool (|T| ≤ max_t) starting from `best` (−1: none yet); candidates not below the current
+  // best (or, with stop_at, not within it) are not tested for P.
+  static Q kkt_min(const Polytope<D>& P, int id, const std::vector<std::vector<int>>& pools,
+                   std::size_t max_t, const QP<D>& y, Q best, const Q* stop_at, bool strict) {
+    std::set<std::vector<int>> tried;
+    std::vector<int> T;
+    const std::vector<int>* pool = nullptr;
+    bool done = false;
+    auto visit = [&] {
+      std::vector<int> rows{id};
+      rows.insert(rows.end(), T.begin(), T.end());
+      if (!tried.insert(rows).second) return;
+      QP<D> x;
+      if (!project(P, rows, y, x)) return;
+      Q d = dist2<D>(x, y);
+      if (best >= 0 && d >= best) return;
+      if (stop_at && !within(d, *stop_at, strict)) return;
+      if (!P.contains(x)) return;
+      best = d;
+      if (stop_at) done = true;
+    };
+    auto rec = [&](auto&& self, std::size_t from) -> void {  // T stays sorted
+      visit();
+      if (done || T.size() >= max_t) return;
+      for (std::size_t i = from; i < pool->size() && !done; ++i) {
+        T.push_back((*pool)[i]);
+        self(self, i + 1);
+        T.pop_back();
+      }
+    };
+    for (const auto& p : pools) {
+      pool = &p;
+      rec(rec, 0);
+      if (done) break;
+    }
+    return best;
+  }
+
+  // Orthogonal projection of y onto {x : n_i·x = h_i, i ∈ rows} (x = y − Σ λ_i n_i with
+  // G λ = (n_i·y − h_i), G the Gram matrix). False if the rows are linearly dependent.
+  static bool project(const Polytope<D>& P, const std::vector<int>& rows, const QP<D>& y, QP<D>& x) {
+    const std::size_t r = rows.size();
+    std::vector<std::vector<Q>> G(r, std::vector<Q>(r + 1));
+    for (std::size_t i = 0; i < r; ++i) {
+      const auto& hi = P.halves[static_cast<std::size_t>(rows[i])];
+      for (std::size_t j = 0; j < r; ++j)
+        G[i][j] = dot<D>(hi.n, P.halves[static_cast<std::size_t>(rows[j])].n);
+      G[i][r] = dot<D>(hi.n, y) - hi.h;
+    }
+    for (std::size_t c = 0; c < r; ++c) {  // Gauss–Jordan; G is singular iff rows are dependent
+      std::size_t piv = c;
+      while (piv < r && G[piv][c] == 0) ++piv;
+      if (piv == r) return false;
+      std::swap(G[piv], G[c]);
+      for (std::size_t i = 0; i < r; ++i) {
+        if (i == c || G[i][c] == 0) continue;
+        Q f = G[i][c] / G[c][c];
+        for (std::size_t j = c; j <= r; ++j) G[i][j] -= f * G[c][j];
+      }
+    }
+    x = y;
+    for (std::size_t i = 0; i < r; ++i) {
+      Q lambda = G[i][r] / G[i][i];
+      const auto& n = P.halves[static_cast<std::size_t>(rows[i])].n;
+      for (std::size_t k = 0; k < D; ++k) x[k] -= lambda * n[k];
+    }
+    return true;
   }
 };
 
@@ -408,12 +561,15 @@ template <std::size_t D>
 std::vector<std::uint32_t> CellOracle<D>::beta_neighbors_sq(std::size_t v, const exact::Dyadic& num,
                                                             const exact::Dyadic& den,
                                                             BetaOptions opt) const {
-  if constexpr (D <= 3) {
-    return impl_->beta(v, detail::to_q(num) / detail::to_q(den), opt);
-  } else {
-    (void)v, (void)num, (void)den, (void)opt;
-    throw InputError("β-clipped neighbour oracle: only D = 2, 3");
-  }
+  return impl_->beta(v, detail::to_q(num) / detail::to_q(den), opt);
+}
+template <std::size_t D>
+std::vector<std::pair<std::uint32_t, std::string>> CellOracle<D>::face_distances_squared(
+    std::size_t v, const exact::Dyadic& beta, BetaOptions opt) const {
+  std::vector<std::pair<std::uint32_t, std::string>> out;
+  for (const auto& [u, d2] : impl_->face_distances(v, detail::to_q(beta * beta), opt))
+    out.emplace_back(u, detail::to_text(d2));
+  return out;
 }
 template <std::size_t D>
 std::string CellOracle<D>::far_squared_brute_force(std::size_t v) const {
@@ -548,6 +704,12 @@ std::vector<std::uint32_t> beta_clipped_voronoi_neighbors_oracle_3d(const std::v
                                                                     const exact::Dyadic& beta,
                                                                     BetaOptions opt) {
   return CellOracle<3>(points).beta_neighbors(v, beta, opt);
+}
+std::vector<std::uint32_t> beta_clipped_voronoi_neighbors_oracle_4d(const std::vector<XPoint<4>>& points,
+                                                                    std::size_t v,
+                                                                    const exact::Dyadic& beta,
+                                                                    BetaOptions opt) {
+  return CellOracle<4>(points).beta_neighbors(v, beta, opt);
 }
 
 #define KMR_WS_INSTANTIATE(D)                                                                  \

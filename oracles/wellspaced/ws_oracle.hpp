@@ -20,14 +20,18 @@
 //  * beta_clipped_voronoi_neighbors: u is a β-clipped Voronoi neighbour of v iff the β-clipped
 //    cell Vor(v) ∩ B(v, β·NN(v)) contains a point equidistant from v and u (§3.1.1), i.e. the
 //    Voronoi face F_u = Vor(v) ∩ bisector(v,u) is nonempty and dist(v, F_u) ≤ β·NN(v) (or < with
-//    strict). A face touching the cell in a single point (cocircular inputs) counts. D = 2, 3.
+//    strict). A face touching the cell in a single point (cocircular inputs) counts. D = 2, 3, 4.
 //    Candidates are all sites within 2β·NN(v) of v, gathered by a search of CGAL's Delaunay graph
 //    (so sites that touch the cell but are not edges of CGAL's chosen triangulation are found).
+//    dist(v, F_u) is exact: in 2D/3D the midpoint of uv, a vertex or an edge point of F_u; in 4D
+//    (and on request in 2D/3D) the least of the KKT points, the projections of v onto the affine
+//    hulls of the faces of F_u that lie in the cell (see FaceDistance).
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "exact/dyadic.hpp"
@@ -75,10 +79,18 @@ struct SizeConformingReport {
 // restricted to Ω, the closed ball of radius β·NN(v). The scan of Fig. 3.6 reaches u when the
 // smallest empty ball through v and u has diameter < β·NN(v): pass β/2 and strict = true, and
 // clip_to_domain = false (the certificate-ball centres of Fig. 3.6 are not confined to Ω).
+// How dist(v, F_u) is computed (all exact; Auto: Edges23 for D = 2, 3, KktFaceVertices for D = 4).
+//  Edges23: the midpoint of uv if it lies in the cell, else the nearest vertex or edge point of F_u.
+//  KktFaceVertices: the vertices of F_u and the projections of v onto {bisector} ∪ T that lie in
+//    the cell, T ⊆ the planes through one vertex of F_u, |T| ≤ D − 2, independent rows.
+//  KktAllFacePlanes: the projections onto {bisector} ∪ T, T ⊆ all planes meeting F_u, |T| ≤ D − 1
+//    (slow; a self-test of the other two).
+enum class FaceDistance { Auto, Edges23, KktFaceVertices, KktAllFacePlanes };
 struct BetaOptions {
   bool clip_to_domain = true;
   bool strict = false;
   bool brute_force = false;  // candidates: every other site (self-tests of the oracle)
+  FaceDistance face_distance = FaceDistance::Auto;
 };
 
 // Per-vertex exact geometry of one point set: Delaunay neighbours (CGAL), NN², clipped cells.
@@ -97,13 +109,17 @@ class CellOracle {
   std::string far_squared(std::size_t v) const;          // R_v², exact "p/q"
   // ρ-well-spacedness of one vertex (exact).
   bool well_spaced(std::size_t v, const Rho& rho) const;
-  // β-clipped Voronoi neighbours of v (sorted indices). D = 2, 3 only.
+  // β-clipped Voronoi neighbours of v (sorted indices). D = 2, 3, 4.
   std::vector<std::uint32_t> beta_neighbors(std::size_t v, const exact::Dyadic& beta,
                                             BetaOptions opt = {}) const;
   // Same with β given by β² = num/den (e.g. β = √2).
   std::vector<std::uint32_t> beta_neighbors_sq(std::size_t v, const exact::Dyadic& beta_sq_num,
                                                const exact::Dyadic& beta_sq_den,
                                                BetaOptions opt = {}) const;
+  // Exact dist(v, F_u)² ("p/q") for every candidate u (|uv| ≤ 2β·NN(v)) whose face F_u is
+  // nonempty, sorted by u; for self-tests of the face distance methods.
+  std::vector<std::pair<std::uint32_t, std::string>> face_distances_squared(
+      std::size_t v, const exact::Dyadic& beta, BetaOptions opt = {}) const;
   // R_v² computed by clipping with ALL other points' bisectors (O(n) per vertex): an oracle for
   // the oracle, independent of CGAL; for small sets in self-tests.
   std::string far_squared_brute_force(std::size_t v) const;
@@ -141,14 +157,15 @@ std::vector<std::uint32_t> beta_clipped_voronoi_neighbors_oracle_2d(
 std::vector<std::uint32_t> beta_clipped_voronoi_neighbors_oracle_3d(
     const std::vector<XPoint<3>>& points, std::size_t v, const exact::Dyadic& beta,
     BetaOptions opt = {});
+std::vector<std::uint32_t> beta_clipped_voronoi_neighbors_oracle_4d(
+    const std::vector<XPoint<4>>& points, std::size_t v, const exact::Dyadic& beta,
+    BetaOptions opt = {});
 
 // Raw CGAL Delaunay adjacency (sorted neighbour lists; input must be duplicate-free).
-// D = 2, 3: Delaunay_triangulation_2/3<Epeck>; D = 4: Delaunay_triangulation<Epeck_d<4>>.
+// D = 2, 3: Delaunay_triangulation_2/3<Epeck>; D = 4: Delaunay_triangulation<Epeck_d<4>> (always
+// built: CMake refuses to configure the oracles without Eigen3).
 template <std::size_t D>
 std::vector<std::vector<std::uint32_t>> cgal_delaunay_adjacency(const std::vector<XPoint<D>>& pts);
-
-// False when the 4D CGAL translation unit was not built (Eigen3 missing).
-bool cgal_4d_available();
 
 // For each query, the index of a nearest site (CGAL nearest_vertex, exact predicates). D = 2, 3.
 template <std::size_t D>

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <random>
+#include <utility>
 
 #include "exact/error.hpp"
 #include "ws_exact_q.hpp"
@@ -81,7 +82,6 @@ TEST(WsOracle, T3_3_4_Grid3DRatioIsExactlySqrt3Over2) {
 
 TEST(WsOracle, T3_3_4_Grid4DRatioIsExactlyOne) {
   RecordProperty("claim", "T3.3.4");
-  if (!ws::cgal_4d_available()) GTEST_SKIP() << "CGAL dD Delaunay not built (Eigen3 missing)";
   auto pts = X<4>(grid<4>(3, false));  // cells: hypercubes of side h; corner at distance h
   auto rep = ws::judge_well_spaced<4>(pts, ws::Rho::exactly(Dyadic(1)));
   EXPECT_TRUE(rep.ok);
@@ -194,7 +194,6 @@ TEST(WsOracle, CellsFromDelaunayNeighboursEqualBruteForce3D) {
 TEST(WsOracle, CgalEpeckDDelaunay4DAgreesWithBruteForce) {
   // 4D: cells built from CGAL's dD Delaunay (Epeck_d) neighbours equal the cells clipped by every
   // bisector, so the neighbourhoods contain every Voronoi neighbour of each cell inside Ω.
-  if (!ws::cgal_4d_available()) GTEST_SKIP() << "CGAL dD Delaunay not built (Eigen3 missing)";
   for (auto kind : {ws::gen::Kind::Uniform, ws::gen::Kind::Boundary, ws::gen::Kind::ClosePairs})
     expect_brute_force_agrees<4>(ws::gen::make<4>(kind, 24, 5));
   expect_brute_force_agrees<4>(grid<4>(3, false));
@@ -270,6 +269,101 @@ TEST(WsOracle, L3_2_1_BetaNeighboursFromDelaunaySearchEqualBruteForce) {
   expect_beta_brute_force<2>(grid<2>(7, false));
   for (auto kind : {ws::gen::Kind::Uniform, ws::gen::Kind::Grid, ws::gen::Kind::Boundary})
     expect_beta_brute_force<3>(ws::gen::make<3>(kind, 40, 9));
+}
+
+TEST(WsOracle, L3_2_1_BetaNeighboursOnCosphericalGrid4D) {
+  RecordProperty("claim", "L3.2.1");
+  // 3^4 grid, h = 1/2: the centre's cell is the hypercube [1/4,3/4]^4. A neighbour at offset with
+  // k nonzero coordinates (±h) touches it in a face of dimension 4 − k, nearest point at h·√k/2:
+  // k = 1: 8 (a facet, the midpoint), k = 2: 24 (a 2-face), k = 3: 32 (an edge), k = 4: 16 (a
+  // corner). NN = h, so β² = k/4 admits 8, 32, 64, 80 neighbours; just below, the previous count.
+  auto g = grid<4>(3, false);
+  ws::CellOracle<4> O(X<4>(g));
+  const std::size_t c = index_of<4>(g, {0.5, 0.5, 0.5, 0.5});
+  const std::size_t want[] = {0, 8, 32, 64, 80};
+  for (int k = 1; k <= 4; ++k) {
+    const Dyadic b2 = dy(k / 4.0);
+    for (bool domain : {true, false}) {
+      EXPECT_EQ(O.beta_neighbors_sq(c, b2, Dyadic(1), {domain, false}).size(), want[k]) << k;
+      EXPECT_EQ(O.beta_neighbors_sq(c, b2, Dyadic(1), {domain, true}).size(), want[k - 1]) << k;
+      EXPECT_EQ(O.beta_neighbors_sq(c, b2 - kEps60, Dyadic(1), {domain, false}).size(), want[k - 1]) << k;
+    }
+  }
+  EXPECT_EQ(O.beta_neighbors(c, dy(0.4)).size(), 0u);
+  EXPECT_EQ(ws::beta_clipped_voronoi_neighbors_oracle_4d(X<4>(g), c, dy(0.6)).size(), 8u);
+  // The corner (0,0,0,0): cell [0,1/4]^4 in Ω; its 15 neighbours in {0,h}^4 \ {0} at h·√k/2.
+  const std::size_t o = index_of<4>(g, {0, 0, 0, 0});
+  const std::size_t corner[] = {0, 4, 10, 14, 15};
+  for (int k = 1; k <= 4; ++k) {
+    EXPECT_EQ(O.beta_neighbors_sq(o, dy(k / 4.0), Dyadic(1)).size(), corner[k]) << k;
+    EXPECT_EQ(O.beta_neighbors_sq(o, dy(k / 4.0) - kEps60, Dyadic(1)).size(), corner[k - 1]) << k;
+  }
+}
+
+TEST(WsOracle, L3_2_1_BetaNeighboursFromDelaunaySearchEqualBruteForce4D) {
+  RecordProperty("claim", "L3.2.1");
+  // CGAL's 4D (Epeck_d) Delaunay graph searched within 2β·NN(v) finds every β-clipped neighbour
+  // that the brute force over all vertices finds, on random, boundary, 2^-30-pair and cospherical
+  // grid inputs.
+  for (auto kind : {ws::gen::Kind::Uniform, ws::gen::Kind::Boundary, ws::gen::Kind::ClosePairs,
+                    ws::gen::Kind::Line})
+    expect_beta_brute_force<4>(ws::gen::make<4>(kind, 24, 9));
+  expect_beta_brute_force<4>(grid<4>(3, false));
+}
+
+// Exact dist(v, F_u)² by each method in `how`, all equal, for every candidate u of every `stride`-th
+// vertex, for several β and both domain conventions.
+template <std::size_t D>
+void expect_face_distances_agree(const std::vector<ws::DPoint<D>>& pts,
+                                 std::initializer_list<ws::FaceDistance> how, std::size_t stride,
+                                 std::initializer_list<double> betas) {
+  ws::CellOracle<D> O(X<D>(pts));
+  for (double beta : betas)
+    for (bool domain : {true, false})
+      for (std::size_t v = 0; v < pts.size(); v += stride) {
+        std::vector<std::vector<std::pair<std::uint32_t, std::string>>> got;
+        for (auto h : how) {
+          ws::BetaOptions o{domain, false};
+          o.face_distance = h;
+          got.push_back(O.face_distances_squared(v, dy(beta), o));
+        }
+        for (std::size_t i = 1; i < got.size(); ++i)
+          ASSERT_EQ(got[0], got[i]) << D << "D v " << v << " beta " << beta << " domain " << domain
+                                    << " method " << i;
+        ASSERT_FALSE(got[0].empty());
+      }
+}
+
+TEST(WsOracle, L3_2_1_FaceDistanceMethodsAgree2D3D) {
+  RecordProperty("claim", "L3.2.1");
+  // The KKT face distance used in 4D equals, in 2D and 3D, the hand-written one (midpoint, vertices,
+  // edge points; pinned down by the hand-derived grids above), exactly, for every candidate face.
+  using F = ws::FaceDistance;
+  for (auto kind : ws::gen::kAllKinds) {
+    expect_face_distances_agree<2>(ws::gen::make<2>(kind, 40, 13),
+                                   {F::Edges23, F::KktFaceVertices, F::KktAllFacePlanes}, 2, {1.0, 3.0});
+    expect_face_distances_agree<3>(ws::gen::make<3>(kind, 30, 13),
+                                   {F::Edges23, F::KktFaceVertices, F::KktAllFacePlanes}, 2, {1.0, 3.0});
+  }
+  expect_face_distances_agree<2>(grid<2>(7, false), {F::Edges23, F::KktFaceVertices, F::KktAllFacePlanes},
+                                 2, {1.0, 3.0});
+  expect_face_distances_agree<3>(grid<3>(4, false), {F::Edges23, F::KktFaceVertices, F::KktAllFacePlanes},
+                                 2, {1.0, 3.0});
+}
+
+TEST(WsOracle, L3_2_1_FaceDistanceFromFaceVerticesEqualsAllPlanes4D) {
+  RecordProperty("claim", "L3.2.1");
+  // 4D: the KKT points over subsets of the planes through one face vertex (|T| ≤ 2, what the
+  // oracle uses) give the same exact distances as all subsets of all planes meeting the face
+  // (|T| ≤ 3, no vertex bookkeeping beyond which planes meet F_u).
+  using F = ws::FaceDistance;
+  for (auto kind : {ws::gen::Kind::Uniform, ws::gen::Kind::Boundary, ws::gen::Kind::ClosePairs,
+                    ws::gen::Kind::Line})
+    expect_face_distances_agree<4>(ws::gen::make<4>(kind, 14, 17),
+                                   {F::KktFaceVertices, F::KktAllFacePlanes}, 4, {2.0});
+  // The 3^4 grid: vertices 0 (a corner), 40 (the centre), 80 (the opposite corner).
+  expect_face_distances_agree<4>(grid<4>(3, false), {F::KktFaceVertices, F::KktAllFacePlanes}, 40,
+                                 {0.75});
 }
 
 // ---- Size conformity (Lemma 3.3.3) ----
