@@ -98,7 +98,7 @@ TEST(WsJudge, T3_3_4_StableWS3DIsWellSpacedAndSizeConforming) {
   using K = ws::gen::Kind;
   judge_generated<3>({{K::Uniform, 12}, {K::Grid, 12}, {K::Boundary, 12}, {K::Clustered, 12},
                       {K::Line, 6}, {K::ClosePairs, 4}},
-                     {2.0}, 1);
+                     {1.5, 2.0}, 1);
 }
 
 TEST(WsJudge, T3_3_4_StableWS4DJudgedWithCgalEpeckD) {

@@ -295,24 +295,32 @@ Verdict t343(const Options& o, bool lower_bound) {
   return v;
 }
 
+// Issue 4 target: one update ≥ 10^3× faster than a from-scratch run at n = 10^5 in 2D (full mode);
+// quick mode (ctest) only checks that an update beats a from-scratch run.
 Verdict speed(const Options& o) {
   Verdict v;
-  std::size_t n = o.quick ? 200 : 10000;
+  std::vector<std::size_t> sizes = o.quick ? std::vector<std::size_t>{200} : std::vector<std::size_t>{10000, 100000};
+  const double target = o.quick ? 1 : 1000;
   int pairs = o.quick ? 5 : 20;
-  auto pts = gen::points<2>(gen::Kind::uniform, n + pairs, o.seed + 3);
-  std::vector<Point<2>> in(pts.begin(), pts.begin() + n);
-  auto t0 = std::chrono::steady_clock::now();
-  WellSpacedSet<2> ws(in);
-  double build = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  auto u = sample_updates<2>(ws, std::vector<Point<2>>(pts.begin() + n, pts.end()));
-  double upd = u.mean_seconds;
-  v.figure("n", std::to_string(n));
-  v.figure("from-scratch seconds", fmt(build));
-  v.figure("mean update seconds", fmt(upd));
-  v.figure("speed ratio (scratch/update)", fmt(build / upd));
-  v.figure("mean operations touched per update", fmt(u.mean_touched));
-  v.pass = build / upd > 1;
-  v.summary = "2D uniform: one insertion/deletion with PropagateWS vs StableWS from scratch (target >= 1000x at n = 1e5)";
+  v.pass = true;
+  for (std::size_t n : sizes) {
+    auto pts = gen::points<2>(gen::Kind::uniform, n + pairs, o.seed + 3);
+    std::vector<Point<2>> in(pts.begin(), pts.begin() + n);
+    auto t0 = std::chrono::steady_clock::now();
+    WellSpacedSet<2> ws(in);
+    double build = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    auto u = sample_updates<2>(ws, std::vector<Point<2>>(pts.begin() + n, pts.end()));
+    double upd = u.mean_seconds;
+    std::string at = "n=" + std::to_string(n) + " ";
+    v.figure(at + "from-scratch seconds", fmt(build));
+    v.figure(at + "mean update seconds", fmt(upd));
+    v.figure(at + "speed ratio (scratch/update)", fmt(build / upd));
+    v.figure(at + "mean operations touched per update", fmt(u.mean_touched));
+    v.pass = v.pass && build / upd > 1;
+    if (n == sizes.back()) v.pass = v.pass && build / upd >= target;
+  }
+  v.summary = o.quick ? "2D uniform: one insertion/deletion with PropagateWS vs StableWS from scratch (update must be faster)"
+                      : "2D uniform: one insertion/deletion with PropagateWS vs StableWS from scratch; target >= 1000x at n = 1e5";
   return v;
 }
 
