@@ -28,10 +28,13 @@ void check_invariants(const Quadtree<D>& T, const std::vector<Point<D>>& pts) {
   for (auto& l : T.leaves()) {
     int n = brute_count<D>(pts, l);
     ASSERT_LE(n, 1) << l.str();
-    if (n == 1)
+    if (n == 1) {
       for_block<D>(l, 1, [&](const Key<D>& m) {
-        if (!(m == l)) EXPECT_EQ(brute_count<D>(pts, m), 0) << "crowding " << l.str();
+        if (!(m == l)) {
+          EXPECT_EQ(brute_count<D>(pts, m), 0) << "crowding " << l.str();
+        }
       });
+    }
   }
   // grading: every neighbour of an internal node exists
   for (auto& s : T.internal_nodes())
