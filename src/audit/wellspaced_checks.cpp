@@ -108,6 +108,9 @@ Verdict t338(const Options& o) {
     last = mean, lastf = double(s.steiner_per_fill_max);
     v.figure("n=" + std::to_string(n) + " squares/CV call mean,max; Steiner/fill max",
              fmt(mean) + ", " + std::to_string(s.cv_squares_max) + "; " + std::to_string(s.steiner_per_fill_max));
+    // the two-tier filter (spec/wellspaced.md): share of calls the interval tier could not decide
+    v.figure("n=" + std::to_string(n) + " exact fallbacks / (CV calls + fills)",
+             fmt(double(s.exact_fallbacks) / double(s.cv_calls + s.fills)));
   }
   v.pass = last <= 2 * first && lastf <= 2 * std::max(1.0, firstf);
   v.summary = "2D uniform: squares read per clipped-Voronoi call and Steiner vertices per fill stay bounded as n grows (ratio last/first " +

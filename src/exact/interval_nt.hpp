@@ -9,6 +9,7 @@
 //    pair of points of the operands, and throw Uncertain when the operands do not decide it (overlap,
 //    division by an interval holding 0, overflow, or results too small for fma to certify).
 //  * The caller catches Uncertain and redoes the whole computation exactly (see wellspaced/).
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -55,8 +56,8 @@ class IntervalNT {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (double x : {a.lo_, a.hi_})
       for (double y : {b.lo_, b.hi_}) {
-        lo = std::fmin(lo, prod(x, y, -1));
-        hi = std::fmax(hi, prod(x, y, 1));
+        lo = std::min(lo, prod(x, y, -1));  // operands are finite (check()), so no NaN
+        hi = std::max(hi, prod(x, y, 1));
       }
     return IntervalNT(lo, hi);
   }
@@ -65,8 +66,8 @@ class IntervalNT {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (double x : {a.lo_, a.hi_})
       for (double y : {b.lo_, b.hi_}) {
-        lo = std::fmin(lo, quot(x, y, -1));
-        hi = std::fmax(hi, quot(x, y, 1));
+        lo = std::min(lo, quot(x, y, -1));
+        hi = std::max(hi, quot(x, y, 1));
       }
     return IntervalNT(lo, hi);
   }
