@@ -39,7 +39,9 @@ TEST(IntervalNT, EnclosureOfEveryOperation) {
     Q qx = (qa + qb) * qc - qa * qb, qy = (qa - qc) * (qb + qc);
     ASSERT_TRUE(holds(x, qx)) << a << " " << b << " " << c;
     ASSERT_TRUE(holds(y, qy)) << a << " " << b << " " << c;
-    if (y.lo() > 0 || y.hi() < 0) ASSERT_TRUE(holds(x / y, qx / qy)) << a << " " << b << " " << c;
+    if (y.lo() > 0 || y.hi() < 0) {
+      ASSERT_TRUE(holds(x / y, qx / qy)) << a << " " << b << " " << c;
+    }
   }
 }
 
