@@ -5,6 +5,8 @@
 //  * Enclosure: for x ∈ a, y ∈ b, x∘y ∈ a∘b for ∘ ∈ {+, −, ×, ÷}. Rounding is directed by the
 //    exact error of each double operation (TwoSum; fma for × and ÷), so no rounding-mode switch is
 //    needed, and an operation whose result is a double gives a point interval (exact stays exact).
+//    fma's error terms are exact only away from underflow, so results below 2^-900 in magnitude,
+//    and divisions with an operand below 2^-900, throw Uncertain (found by fuzz/interval_nt).
 //  * Decisions are never guessed: sign(), <, <=, ==, ... return the answer that holds for every
 //    pair of points of the operands, and throw Uncertain when the operands do not decide it (overlap,
 //    division by an interval holding 0, overflow, or results too small for fma to certify).
@@ -125,6 +127,8 @@ class IntervalNT {
     return (dir < 0 ? e < 0 : e > 0) ? step(p, dir) : p;
   }
   static double quot(double a, double b, int dir) {
+    // fma's remainder a − q·b is exact only away from underflow: refuse tiny operands too
+    if (std::fabs(b) < kTiny || (a != 0 && std::fabs(a) < kTiny)) throw_uncertain();
     double q = a / b;
     if (q != 0 && std::fabs(q) < kTiny) throw_uncertain();
     if (q == 0 && a != 0) throw_uncertain();

@@ -71,6 +71,8 @@ TEST(IntervalNT, DecisionsAreCertainOrThrow) {
   EXPECT_THROW(IntervalNT(1.0) / (third - third), Uncertain);  // divisor holds 0
   EXPECT_THROW(IntervalNT(1e300) * IntervalNT(1e300), Uncertain);  // overflow
   EXPECT_THROW(IntervalNT(1e-200) * IntervalNT(1e-200), Uncertain);  // below fma's reach
+  // subnormal operands: the remainder a − q·b would be rounded (found by fuzz/interval_nt)
+  EXPECT_THROW(IntervalNT(0x0.016687e92154ep-1022) / IntervalNT(0x0.0000000000307p-1022), Uncertain);
 }
 
 TEST(IntervalNT, EncloseRationals) {
