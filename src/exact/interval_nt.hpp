@@ -5,8 +5,10 @@
 //  * Enclosure: for x ∈ a, y ∈ b, x∘y ∈ a∘b for ∘ ∈ {+, −, ×, ÷}. Rounding is directed by the
 //    exact error of each double operation (TwoSum; fma for × and ÷), so no rounding-mode switch is
 //    needed, and an operation whose result is a double gives a point interval (exact stays exact).
-//    fma's error terms are exact only away from underflow, so results below 2^-900 in magnitude,
-//    and divisions with an operand below 2^-900, throw Uncertain (found by fuzz/interval_nt).
+//    fma's error terms are exact only away from underflow: products below 2^-900 in magnitude get
+//    the bound [0, 2^-899] (or its negative), never an exception — exact-tier filters use +, −, ×
+//    only and must not throw; divisions with an operand below 2^-900 throw Uncertain (found by
+//    fuzz/interval_nt).
 //  * Decisions are never guessed: sign(), <, <=, ==, ... return the answer that holds for every
 //    pair of points of the operands, and throw Uncertain when the operands do not decide it (overlap,
 //    division by an interval holding 0, overflow, or results too small for fma to certify).
@@ -121,8 +123,13 @@ class IntervalNT {
   static constexpr double kTiny = 0x1p-900;
   static double prod(double a, double b, int dir) {
     double p = a * b;
-    if (p != 0 && std::fabs(p) < kTiny) throw_uncertain();
-    if (p == 0 && a != 0 && b != 0) throw_uncertain();
+    if ((p != 0 && std::fabs(p) < kTiny) || (p == 0 && a != 0 && b != 0)) {
+      // |a·b| < 2·kTiny and its sign is known: a sound (if wide) bound, so that exact-tier
+      // filters on tiny coordinates never throw; decisions near 0 then go to the exact tier
+      bool positive = (a > 0) == (b > 0);
+      if (dir < 0) return positive ? 0.0 : -2 * kTiny;
+      return positive ? 2 * kTiny : 0.0;
+    }
     double e = std::fma(a, b, -p);
     return (dir < 0 ? e < 0 : e > 0) ? step(p, dir) : p;
   }

@@ -210,10 +210,12 @@ struct Polytope {
     return j;
   }
 
-  bool contains(const P& x) const {
+  // x ∈ P? Constraints listed in `on` are known to be tight at x (not tested: in the exact tier
+  // their slack is 0, in the interval tier it would straddle 0 and throw).
+  bool contains(const P& x, const std::vector<int>& on = {}) const {
     IPoint<D> xi = enclose<NT, D>(x);
     for (std::size_t k = 0; k < h.size(); ++k)
-      if (sign_at(k, x, xi) > 0) return false;
+      if (std::find(on.begin(), on.end(), static_cast<int>(k)) == on.end() && sign_at(k, x, xi) > 0) return false;
     return true;
   }
   // An upper bound on the max squared distance from c over the vertices (rigorous; for pruning).
@@ -293,7 +295,7 @@ struct Polytope {
       if (found) return;
       if (auto x = project(c, rows)) {
         IPoint<D> xi = enclose<NT, D>(*x);
-        if (compare_dist2(*x, xi, c, ci, r2, r2i) <= 0 && contains(*x)) {
+        if (compare_dist2(*x, xi, c, ci, r2, r2i) <= 0 && contains(*x, rows)) {
           found = true;
           return;
         }

@@ -301,8 +301,8 @@ struct WellSpacedSet<D>::Impl {
     IntervalNT a = lo - c, b = c - hi;
     return IntervalNT::hull(std::max({0.0, a.lo(), b.lo()}), std::max({0.0, a.hi(), b.hi()}));
   }
-  // A lower bound on the squared distance from v to square s (orders the scan; prunes it). Above
-  // level 52 the corners k·2^-L are exact doubles, so each gap has one rounding and the sum of D ≤ 4
+  // A lower bound on the squared distance from v to square s (orders the scan; prunes it). At
+  // levels ≤ 52 the corners k·2^-L are exact doubles, so each gap has one rounding and the sum of D ≤ 4
   // squares has relative error < (D+3)·2^-53 < 2^-48; deeper squares go through intervals.
   static double box_dist2_lower(const Pt& v, const IPoint<D>& vi, const K& s) {
     if (s.level <= 52) {

@@ -122,6 +122,19 @@ TEST(WellspacedStatic, IntervalTierEqualsExactTier) {
   tiers_case<3>(gen::Kind::grid, 27, 8, true);
 }
 
+// Coordinates far below the depth limit's scale (2^-600) are valid input: the exact tier's interval
+// filters must bound tiny products, not throw (found in review: Uncertain escaped both tiers).
+TEST(WellspacedStatic, TinyCoordinatesAreValidInput) {
+  std::vector<Point<2>> in{{0x1p-600, 0.5}, {0.5, 0.5}, {0.3, 0.9}, {0x1p-1074, 0x1p-1000}};
+  for (bool exact_only : {false, true}) {
+    Params p;
+    p.exact_only = exact_only;
+    WellSpacedSet<2> ws(in, p);
+    std::sort(in.begin(), in.end());
+    check_output<2>(in, ws, exact_only ? "tiny, exact only" : "tiny");
+  }
+}
+
 TEST(WellspacedDynamic, L3_4_2_UpdatesEqualFromScratch) {
   RecordProperty("claim", "L3.4.2");
   for (auto k : gen::kAllKinds) {
