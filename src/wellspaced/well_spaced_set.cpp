@@ -11,7 +11,6 @@
 #include <queue>
 #include <set>
 #include <unordered_map>
-#include <unordered_set>
 #include <algorithm>
 
 #include "exact/error.hpp"
@@ -366,12 +365,12 @@ struct WellSpacedSet<D>::Impl {
       IntervalNT radius = IntervalNT::hull(vb[j].r_lo, vb[j].r_hi);
       if (gap.hi() < radius.lo()) return true;
       int sg = filtered_sign<NT>(gap - radius, [&] {
-        NT side = NT(1);
-        for (int l = 0; l < s.level; ++l) side /= NT(2);
+        const NT side(std::ldexp(1.0, -s.level));  // 2^-L: a double (L ≤ 56)
         NT g2 = 0;
         for (std::size_t i = 0; i < D; ++i) {
-          NT lo = NT(static_cast<double>(s.k[i] >> 26)) * NT(double(1 << 26)) + NT(static_cast<double>(s.k[i] & ((1u << 26) - 1)));
-          lo = lo * side - NT(v[i]);
+          // k < 2^56 may not be a double: k = hi·2^28 + lo with both halves exact
+          const std::uint64_t k = s.k[i];
+          NT lo = (NT(static_cast<double>(k >> 28)) * NT(0x1p28) + NT(static_cast<double>(k & 0xFFFFFFFu))) * side - NT(v[i]);
           NT hi = lo + side, g = 0;
           if (c.x[i] < lo) g = lo - c.x[i];
           else if (c.x[i] > hi) g = c.x[i] - hi;
