@@ -10,12 +10,17 @@
 #include <utility>
 #include <vector>
 
+#include "svg/plot.hpp"
+
 namespace kmr::audit {
 
 struct Options {
   bool quick = false;          // smaller sizes (used by the ctest `audit` label)
   std::uint64_t seed = 20121;  // every random input derives from this seed
   std::string only;            // run only the checks whose claim ID starts with this prefix
+  // Called before each check (index from 0, count, claim ID) and once more with index == count at
+  // the end; the CLI shows it on stderr when stderr is a terminal. Never writes to `out`.
+  std::function<void(std::size_t, std::size_t, const std::string&)> progress;
 };
 
 struct Verdict {
@@ -23,6 +28,11 @@ struct Verdict {
   std::string summary;                                       // one line: what was checked, on what
   std::vector<std::pair<std::string, std::string>> figures;  // measured figures, name → value
   void figure(std::string name, std::string value) { figures.emplace_back(std::move(name), std::move(value)); }
+  // The pictures of the measured figures: fill an svg::Plot (series of (x, y) points, axis labels and
+  // units, optional bounds) and the report draws it; the JSON carries the same points.
+  std::vector<svg::Plot> plots;
+  void plot(svg::Plot p) { plots.push_back(std::move(p)); }
+  std::string thesis;  // the thesis's (or its cited anchor's) own figure for this claim, when it gives one
 };
 
 struct Check {
@@ -42,6 +52,23 @@ std::vector<Check> wellspaced_checks();
 
 // A measured figure as text with 3 significant digits (one format for every check).
 std::string fmt(double x);
+
+// kmr's version (CMake project version), printed by `kmr --version` and written into JSON and report.
+const char* version();
+
+// One check's outcome.
+struct Result {
+  std::string claim, title;
+  Verdict verdict;
+  double seconds = 0;
+};
+// Runs the checks whose ID starts with options.only, in registry order (a throwing check FAILs).
+// Throws InputError naming the prefix and listing the known claim IDs when none matches.
+std::vector<Result> run_checks(const Options& options);
+void print_table(const std::vector<Result>& results, std::ostream& out);
+void write_json(const std::vector<Result>& results, std::ostream& json);
+// 0 iff at least one check ran and every check passed.
+int status(const std::vector<Result>& results);
 
 // Runs the checks, prints a table to `out` (and JSON to `json` when not null). Returns 0 iff all pass.
 int run_audit(const Options& options, std::ostream& out, std::ostream* json);

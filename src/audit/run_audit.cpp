@@ -1,11 +1,18 @@
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <iomanip>
 #include <ostream>
+#include <set>
 #include <sstream>
 
 #include "audit/audit.hpp"
+#include "exact/error.hpp"
+
+#ifndef KMR_VERSION
+#error "KMR_VERSION must be defined by the build (src/audit/CMakeLists.txt)"
+#endif
 
 namespace kmr::audit {
 
@@ -19,7 +26,33 @@ std::string json_escape(const std::string& s) {
   }
   return r;
 }
+std::string json_number(double x) {
+  if (!std::isfinite(x)) return "null";
+  char b[40];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+std::string json_string(const std::string& s) { return "\"" + json_escape(s) + "\""; }
+
+void write_series(std::ostream& json, const std::vector<svg::Series>& list) {
+  json << "[";
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    json << (i ? "," : "") << "{\"name\":" << json_string(list[i].name) << ",\"points\":[";
+    for (std::size_t j = 0; j < list[i].points.size(); ++j)
+      json << (j ? "," : "") << "[" << json_number(list[i].points[j].x) << "," << json_number(list[i].points[j].y) << "]";
+    json << "]}";
+  }
+  json << "]";
+}
+void write_axis(std::ostream& json, const svg::Axis& a) {
+  json << "{\"label\":" << json_string(a.label) << ",\"unit\":" << json_string(a.unit) << ",\"log\":" << (a.log ? "true" : "false")
+       << ",\"categories\":[";
+  for (std::size_t i = 0; i < a.categories.size(); ++i) json << (i ? "," : "") << json_string(a.categories[i]);
+  json << "]}";
+}
 }  // namespace
+
+const char* version() { return KMR_VERSION; }
 
 std::string fmt(double x) {
   char b[32];
@@ -27,40 +60,87 @@ std::string fmt(double x) {
   return b;
 }
 
-int run_audit(const Options& options, std::ostream& out, std::ostream* json) {
-  int failed = 0, run = 0;
-  if (json) *json << "[";
-  out << std::left << std::setw(28) << "claim" << std::setw(6) << "verdict" << "  check\n";
-  for (const Check& check : all_checks()) {
-    if (check.claim.rfind(options.only, 0) != 0) continue;
-    Verdict v;
+std::vector<Result> run_checks(const Options& options) {
+  std::vector<Check> chosen;
+  std::string known;
+  for (Check& check : all_checks()) {
+    known += (known.empty() ? "" : ", ") + check.claim;
+    if (check.claim.rfind(options.only, 0) == 0) chosen.push_back(std::move(check));
+  }
+  if (chosen.empty())
+    throw InputError("no claim matches --only '" + options.only + "'; known claim IDs (any prefix works, e.g. 'T3.' or 'A2.1'): " + known);
+  std::vector<Result> results;
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    const Check& check = chosen[i];
+    if (options.progress) options.progress(i, chosen.size(), check.claim);
+    Result r{check.claim, check.title, {}, 0};
     auto start = std::chrono::steady_clock::now();
     try {
-      v = check.run(options);
+      r.verdict = check.run(options);
     } catch (const std::exception& e) {
-      v.pass = false;
-      v.summary = std::string("threw: ") + e.what();
+      r.verdict.pass = false;
+      r.verdict.summary = std::string("threw: ") + e.what();
     }
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    ++run;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    results.push_back(std::move(r));
+  }
+  if (options.progress) options.progress(chosen.size(), chosen.size(), "");
+  return results;
+}
+
+void print_table(const std::vector<Result>& results, std::ostream& out) {
+  int failed = 0;
+  out << std::left << std::setw(28) << "claim" << std::setw(6) << "verdict" << "  check\n";
+  for (const Result& r : results) {
+    const Verdict& v = r.verdict;
     if (!v.pass) ++failed;
-    out << std::left << std::setw(28) << check.claim << std::setw(6) << (v.pass ? "PASS" : "FAIL") << "  "
-        << check.title << "\n";
+    out << std::left << std::setw(28) << r.claim << std::setw(6) << (v.pass ? "PASS" : "FAIL") << "  " << r.title << "\n";
     if (!v.summary.empty()) out << std::string(36, ' ') << v.summary << "\n";
     for (auto& [name, value] : v.figures) out << std::string(36, ' ') << name << " = " << value << "\n";
-    if (json) {
-      *json << (run > 1 ? "," : "") << "\n {\"claim\":\"" << json_escape(check.claim) << "\",\"title\":\""
-            << json_escape(check.title) << "\",\"pass\":" << (v.pass ? "true" : "false") << ",\"summary\":\""
-            << json_escape(v.summary) << "\",\"seconds\":" << seconds << ",\"figures\":{";
-      for (std::size_t i = 0; i < v.figures.size(); ++i)
-        *json << (i ? "," : "") << "\"" << json_escape(v.figures[i].first) << "\":\""
-              << json_escape(v.figures[i].second) << "\"";
-      *json << "}}";
-    }
   }
-  if (json) *json << "\n]\n";
-  out << run - failed << " passed, " << failed << " failed\n";
-  return failed == 0 && run > 0 ? 0 : 1;
+  out << results.size() - failed << " passed, " << failed << " failed\n";
+}
+
+void write_json(const std::vector<Result>& results, std::ostream& json) {
+  json << "[";
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const Result& r = results[k];
+    const Verdict& v = r.verdict;
+    json << (k ? "," : "") << "\n {\"claim\":" << json_string(r.claim) << ",\"title\":" << json_string(r.title)
+         << ",\"pass\":" << (v.pass ? "true" : "false") << ",\"summary\":" << json_string(v.summary)
+         << ",\"seconds\":" << json_number(r.seconds) << ",\"kmr_version\":" << json_string(version())
+         << ",\"thesis\":" << json_string(v.thesis) << ",\"figures\":{";
+    for (std::size_t i = 0; i < v.figures.size(); ++i)
+      json << (i ? "," : "") << json_string(v.figures[i].first) << ":" << json_string(v.figures[i].second);
+    json << "},\"plots\":[";
+    for (std::size_t i = 0; i < v.plots.size(); ++i) {
+      const svg::Plot& p = v.plots[i];
+      json << (i ? "," : "") << "{\"title\":" << json_string(p.title) << ",\"x\":";
+      write_axis(json, p.x);
+      json << ",\"y\":";
+      write_axis(json, p.y);
+      json << ",\"series\":";
+      write_series(json, p.series);
+      json << ",\"bounds\":";
+      write_series(json, p.bounds);
+      json << "}";
+    }
+    json << "]}";
+  }
+  json << "\n]\n";
+}
+
+int status(const std::vector<Result>& results) {
+  for (const Result& r : results)
+    if (!r.verdict.pass) return 1;
+  return results.empty() ? 1 : 0;
+}
+
+int run_audit(const Options& options, std::ostream& out, std::ostream* json) {
+  auto results = run_checks(options);
+  print_table(results, out);
+  if (json) write_json(results, *json);
+  return status(results);
 }
 
 }  // namespace kmr::audit

@@ -2,21 +2,27 @@
 #include <iostream>
 
 #include "audit/audit.hpp"
+#include "audit/ledger.hpp"
+#include "audit/report.hpp"
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "exact/error.hpp"
 
 namespace kmr::cli {
 
 int audit_command(const Argv& argv) {
-  Args args(argv, {"json", "only", "seed"}, {"quick"});
+  Args args(argv, {"json", "only", "seed", "report"}, {"quick", "quiet"});
   if (args.help()) {
-    std::cout << "usage: kmr audit [--quick] [--only CLAIM-PREFIX] [--seed N] [--json FILE]\n"
+    std::cout << "usage: kmr audit [--quick] [--only CLAIM-PREFIX] [--seed N] [--json FILE] [--report DIR] [--quiet]\n"
                  "Runs every check of the claims ledger (spec/claims.md) on built-in seeded defaults and\n"
                  "prints a table: claim, verdict, measured figures. Exit status 1 if any claim fails.\n"
                  "  --quick   smaller inputs (what ctest runs)\n"
                  "  --only    run only the claims whose ID starts with the prefix\n"
-                 "  --json    also write the verdicts and figures as JSON to FILE\n";
+                 "  --json    also write the verdicts, figures and plot data as JSON to FILE\n"
+                 "  --report  also write DIR/report.md, DIR/index.html (offline) and DIR/*.svg plots: one\n"
+                 "            entry per ledger claim with verdict, figures and the command that replays it\n"
+                 "  --quiet   no progress on stderr (shown only when stderr is a terminal)\n";
     return 0;
   }
   if (!args.positional().empty()) throw InputError("kmr audit takes no positional argument");
@@ -29,7 +35,22 @@ int audit_command(const Argv& argv) {
     json.open(*path);
     if (!json) throw InputError("cannot write --json file '" + *path + "'");
   }
-  return audit::run_audit(options, std::cout, json.is_open() ? &json : nullptr);
+  std::vector<audit::LedgerSection> ledger;
+  if (args.value("report")) ledger = audit::parse_ledger(audit::claims_ledger());
+  Progress progress(args.has("quiet"));
+  if (progress.enabled())
+    options.progress = [&](std::size_t i, std::size_t n, const std::string& claim) {
+      if (i < n) progress.message("kmr audit [" + std::to_string(i + 1) + "/" + std::to_string(n) + "] " + claim);
+      else progress.done();
+    };
+  auto results = audit::run_checks(options);
+  audit::print_table(results, std::cout);
+  if (json.is_open()) audit::write_json(results, json);
+  if (auto dir = args.value("report")) {
+    audit::write_report(*dir, results, options, ledger);
+    std::cout << "report: " << *dir << "/index.html, " << *dir << "/report.md\n";
+  }
+  return audit::status(results);
 }
 
 }  // namespace kmr::cli

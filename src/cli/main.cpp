@@ -3,6 +3,7 @@
 #include <iostream>
 #include <string>
 
+#include "audit/audit.hpp"
 #include "cli/commands.hpp"
 #include "exact/error.hpp"
 
@@ -23,7 +24,7 @@ const Command kCommands[] = {
 };
 
 int usage(std::ostream& out) {
-  out << "usage: kmr <command> [options]   (kmr <command> --help for details)\n\ncommands:\n";
+  out << "usage: kmr <command> [options]   (kmr <command> --help for details; kmr --version)\n\ncommands:\n";
   for (const Command& c : kCommands) out << "  " << c.name << std::string(12 - std::string(c.name).size(), ' ') << c.summary << "\n";
   return 0;
 }
@@ -37,6 +38,10 @@ int main(int argc, char** argv) {
   }
   std::string name = argv[1];
   if (name == "--help" || name == "-h" || name == "help") return usage(std::cout);
+  if (name == "--version") {
+    std::cout << "kmr " << kmr::audit::version() << "\n";
+    return 0;
+  }
   kmr::cli::Argv args(argv + 2, argv + argc);
   for (const Command& c : kCommands) {
     if (name != c.name) continue;
