@@ -32,7 +32,12 @@ std::string json_number(double x) {
   std::snprintf(b, sizeof b, "%.17g", x);
   return b;
 }
-std::string json_string(const std::string& s) { return "\"" + json_escape(s) + "\""; }
+std::string json_string(const std::string& s) {
+  std::string r = "\"";
+  r += json_escape(s);
+  r += '"';
+  return r;
+}
 
 void write_series(std::ostream& json, const std::vector<svg::Series>& list) {
   json << "[";
@@ -64,7 +69,8 @@ std::vector<Result> run_checks(const Options& options) {
   std::vector<Check> chosen;
   std::string known;
   for (Check& check : all_checks()) {
-    known += (known.empty() ? "" : ", ") + check.claim;
+    if (!known.empty()) known += ", ";
+    known += check.claim;
     if (check.claim.rfind(options.only, 0) == 0) chosen.push_back(std::move(check));
   }
   if (chosen.empty())

@@ -100,12 +100,16 @@ Verdict t338(const Options& o) {
   Verdict v;
   std::vector<std::size_t> sizes = o.quick ? std::vector<std::size_t>{25, 50, 100} : std::vector<std::size_t>{100, 200, 400, 800};
   double first = 0, last = 0, firstf = 0, lastf = 0;
+  svg::Series mean_s{"mean squares per call", {}}, max_s{"max squares per call", {}}, fill_s{"max Steiner per fill", {}};
   for (std::size_t n : sizes) {
     WellSpacedSet<2> ws(gen::points<2>(gen::Kind::uniform, n, o.seed));
     const Stats& s = ws.stats();
     double mean = double(s.cv_squares_total) / s.cv_calls;
     if (n == sizes.front()) first = mean, firstf = double(s.steiner_per_fill_max);
     last = mean, lastf = double(s.steiner_per_fill_max);
+    mean_s.points.push_back({double(n), mean});
+    max_s.points.push_back({double(n), double(s.cv_squares_max)});
+    fill_s.points.push_back({double(n), double(s.steiner_per_fill_max)});
     v.figure("n=" + std::to_string(n) + " squares/CV call mean,max; Steiner/fill max",
              fmt(mean) + ", " + std::to_string(s.cv_squares_max) + "; " + std::to_string(s.steiner_per_fill_max));
     // the two-tier filter (spec/wellspaced.md): share of calls the interval tier could not decide
@@ -113,6 +117,13 @@ Verdict t338(const Options& o) {
              fmt(double(s.exact_fallbacks) / double(s.cv_calls + s.fills)));
   }
   v.pass = last <= 2 * first && lastf <= 2 * std::max(1.0, firstf);
+  svg::Plot p;
+  p.title = "T3.3.8: squares read per clipped-Voronoi call (2D uniform)";
+  p.x = svg::linear_axis("n", "input points");
+  p.y = svg::linear_axis("per call or fill", "squares, vertices");
+  p.series = {mean_s, max_s, fill_s};
+  p.bounds.push_back(svg::constant_bound("pass bound: 2 x mean at first n", 2 * first, double(sizes.front()), double(sizes.back())));
+  v.plot(std::move(p));
   v.summary = "2D uniform: squares read per clipped-Voronoi call and Steiner vertices per fill stay bounded as n grows (ratio last/first " +
               fmt(last / first) + ")";
   return v;
@@ -123,25 +134,37 @@ Verdict t338(const Options& o) {
 // (all operations) and max NN_∞/ρ^r of input dispatches, and each may move by at most 2x from the
 // smallest to the largest n.
 template <std::size_t D>
-bool l336_series(Verdict& v, gen::Kind kind, const std::vector<std::size_t>& sizes, std::uint64_t seed, std::size_t& above) {
+bool l336_series(Verdict& v, gen::Kind kind, const std::vector<std::size_t>& sizes, std::uint64_t seed, std::size_t& above,
+                 svg::Plot& plot) {
   double lo0 = 0, hi0 = 0, lo = 0, hi = 0;
+  std::string name = std::to_string(D) + "D " + gen::name(kind);
+  svg::Series lo_s{name + " min", {}}, hi_s{name + " max", {}};
   for (std::size_t n : sizes) {
     WellSpacedSet<D> ws(gen::points<D>(kind, n, seed));
     RankRatios R = rank_ratios<D>(ws);
     above += R.above;
     lo = std::min(R.lo, R.in_lo), hi = std::max(R.hi, R.in_hi);
     if (n == sizes.front()) lo0 = lo, hi0 = hi;
+    lo_s.points.push_back({double(n), lo});
+    hi_s.points.push_back({double(n), hi});
     v.figure(std::to_string(D) + "D " + gen::name(kind) + " n=" + std::to_string(n) + " NN_inf/rho^r scheduled min,max; input dispatch min,max",
              fmt(R.lo) + ", " + fmt(R.hi) + "; " + fmt(R.in_lo) + ", " + fmt(R.in_hi));
   }
+  plot.series.push_back(lo_s);
+  plot.series.push_back(hi_s);
   return 2 * lo >= lo0 && hi <= 2 * hi0;
 }
 Verdict l336(const Options& o) {
   Verdict v;
   std::size_t above = 0;
-  bool ok = l336_series<2>(v, gen::Kind::uniform, o.quick ? std::vector<std::size_t>{50, 100, 200} : std::vector<std::size_t>{100, 300, 1000}, o.seed, above);
-  ok &= l336_series<2>(v, gen::Kind::clustered, o.quick ? std::vector<std::size_t>{50, 100, 200} : std::vector<std::size_t>{100, 300, 1000}, o.seed, above);
-  ok &= l336_series<3>(v, gen::Kind::uniform, o.quick ? std::vector<std::size_t>{6, 12} : std::vector<std::size_t>{10, 20, 40}, o.seed, above);
+  svg::Plot plot;
+  plot.title = "L3.3.6: NN_inf(v) / rho^r over all operations (min) and input dispatches (max)";
+  plot.x = svg::log_axis("n", "input points");
+  plot.y = svg::log_axis("NN_inf(v) / rho^r");
+  bool ok = l336_series<2>(v, gen::Kind::uniform, o.quick ? std::vector<std::size_t>{50, 100, 200} : std::vector<std::size_t>{100, 300, 1000}, o.seed, above, plot);
+  ok &= l336_series<2>(v, gen::Kind::clustered, o.quick ? std::vector<std::size_t>{50, 100, 200} : std::vector<std::size_t>{100, 300, 1000}, o.seed, above, plot);
+  ok &= l336_series<3>(v, gen::Kind::uniform, o.quick ? std::vector<std::size_t>{6, 12} : std::vector<std::size_t>{10, 20, 40}, o.seed, above, plot);
+  v.plot(std::move(plot));
   v.pass = ok && above == 0;
   v.summary = std::to_string(above) + " scheduled operations with NN_inf(v) >= rho^(r+1) (exact); min and max of NN_inf/rho^r move <= 2x from smallest to largest n (2D uniform, clustered; 3D uniform)";
   return v;
@@ -156,9 +179,14 @@ Verdict l3315(const Options& o) {
   std::vector<int> ks = o.quick ? std::vector<int>{10, 30} : std::vector<int>{10, 20, 30, 40};
   double first = 0, worst = 0;
   bool ok = true;
+  svg::Plot plot;
+  plot.title = "L3.3.15: affected vertices' distance to the updated point, in NN(v)";
+  plot.x = svg::linear_axis("log2 Delta", "bits of spread");
+  plot.y = svg::linear_axis("max |v vhat| / NN(v) over affected v");
   for (std::size_t n : sizes) {
     auto base = base_input(n, o.seed + 4);
     double at_small_delta = 0;
+    svg::Series series{"n=" + std::to_string(n), {}};
     for (int k : ks) {
       WellSpacedSet<2> ws(base);
       Point<2> q = close_to(base[0], k);
@@ -175,11 +203,16 @@ Verdict l3315(const Options& o) {
       if (first == 0) first = r;
       ok &= r > 0 && r <= 2 * at_small_delta;
       worst = std::max(worst, r);
+      series.points.push_back({double(k), r});
       v.figure("n=" + std::to_string(n) + " Delta=2^" + std::to_string(k) + " max |v vhat|/NN(v) insert, delete; affected vertices",
                fmt(ins.max_ratio) + ", " + fmt(del.max_ratio) + "; " + std::to_string(ins.vertices) + ", " + std::to_string(del.vertices));
     }
     ok &= at_small_delta <= 2 * first;
+    plot.bounds.push_back(svg::constant_bound("pass bound n=" + std::to_string(n) + ": 2 x smallest Delta", 2 * at_small_delta,
+                                              double(ks.front()), double(ks.back())));
+    plot.series.push_back(std::move(series));
   }
+  v.plot(std::move(plot));
   v.pass = ok;
   v.summary = "insert/delete a point 2^-k from an input vertex: max |v vhat|/NN(v) over affected vertices in [" + fmt(first) + ", " +
               fmt(worst) + "], within 2x of the smallest Delta for each n and of the smallest n";
@@ -192,6 +225,7 @@ Verdict t3311(const Options& o) {
   Verdict v;
   bool ok = true;
   double worst = 0;
+  svg::Series by_n{"ops / (n log2 Delta)", {}}, by_delta{"ops / (n log2 Delta)", {}};
   auto run = [&](const std::string& what, const std::vector<Point<2>>& in, double& ratio) {
     auto t0 = std::chrono::steady_clock::now();
     WellSpacedSet<2> ws(in);
@@ -205,8 +239,18 @@ Verdict t3311(const Options& o) {
   for (std::size_t n : o.quick ? std::vector<std::size_t>{50, 100, 200} : std::vector<std::size_t>{250, 500, 1000, 2000}) {
     run("uniform n=" + std::to_string(n), gen::points<2>(gen::Kind::uniform, n, o.seed + 5), r);
     if (first == 0) first = r;
+    by_n.points.push_back({double(n), r});
   }
   ok &= r <= 1.5 * first;
+  {
+    svg::Plot p;
+    p.title = "T3.3.11: StableWS operations per n log2 Delta, growing n (2D uniform)";
+    p.x = svg::linear_axis("n", "input points");
+    p.y = svg::linear_axis("executed operations / (n log2 Delta)");
+    p.series = {by_n};
+    p.bounds.push_back(svg::constant_bound("pass bound: 1.5 x first", 1.5 * first, by_n.points.front().x, by_n.points.back().x));
+    v.plot(std::move(p));
+  }
   first = 0;
   auto base = base_input(o.quick ? 50 : 200, o.seed + 5);
   for (int k : {10, 20, 30, 40}) {
@@ -214,8 +258,18 @@ Verdict t3311(const Options& o) {
     in.push_back(close_to(base[0], k));
     run("uniform n=" + std::to_string(base.size()) + " + pair at 2^-" + std::to_string(k), in, r);
     if (first == 0) first = r;
+    by_delta.points.push_back({log2_spread<2>(in), r});
   }
   ok &= r <= 1.5 * first;
+  {
+    svg::Plot p;
+    p.title = "T3.3.11: operations per n log2 Delta, growing Delta (n = " + std::to_string(base.size()) + " + a close pair)";
+    p.x = svg::linear_axis("log2 Delta", "bits of spread");
+    p.y = svg::linear_axis("executed operations / (n log2 Delta)");
+    p.series = {by_delta};
+    p.bounds.push_back(svg::constant_bound("pass bound: 1.5 x first", 1.5 * first, by_delta.points.front().x, by_delta.points.back().x));
+    v.plot(std::move(p));
+  }
   v.pass = ok;
   v.summary = "2D: executed operations / (n log2 Delta) (max " + fmt(worst) + ") do not grow with n nor with Delta (last <= 1.5 x first per series)";
   return v;
@@ -235,8 +289,14 @@ Verdict t345(const Options& o) {
   const int common = o.quick ? 15 : 14;
   double lo = std::numeric_limits<double>::infinity(), hi = 0, c0 = 0, single = 0, largest = 0;
   bool ok = true;
+  svg::Plot plot;
+  plot.title = "T3.4.5: Steiner vertices inserted per n log2 Delta, n gadget insertions";
+  plot.x = svg::linear_axis("log2 Delta", "bits of spread");
+  plot.y = svg::linear_axis("Steiner inserted / (n log2 Delta)");
+  double lg_lo = std::numeric_limits<double>::infinity(), lg_hi = 0;
   for (const auto& [j, ks] : runs) {
     double at_small = 0, ratio = 0;
+    svg::Series series{"n=" + std::to_string(1 << (2 * j)) + " gadgets", {}};
     for (int k : ks) {
       auto G = gen::gadget_tiling<2>(j, k);
       WellSpacedSet<2> ws(G.input);
@@ -255,12 +315,17 @@ Verdict t345(const Options& o) {
       if (k == common) (j == 0 ? single : largest) = ratio;
       lo = std::min(lo, ratio);
       hi = std::max(hi, ratio);
+      series.points.push_back({lg, ratio});
+      lg_lo = std::min(lg_lo, lg), lg_hi = std::max(lg_hi, lg);
       v.figure("n=" + std::to_string(G.dynamic.size()) + " gadgets (" + std::to_string(G.input.size()) + " input) delta=2^-" + std::to_string(k) +
                    " log2 Delta; Steiner inserted, deleted; inserted/(n log2 Delta)",
                fmt(lg) + "; " + std::to_string(inserted) + ", " + std::to_string(deleted) + "; " + fmt(ratio));
     }
     ok &= ratio >= at_small;
+    plot.series.push_back(std::move(series));
   }
+  plot.bounds.push_back(svg::constant_bound("c0 = 1/(2 log2 2rho) (pass: all above)", c0, lg_lo, lg_hi));
+  v.plot(std::move(plot));
   v.pass = ok && lo >= c0 && 2 * largest >= single;
   v.summary = "tiled gadgets, one dynamic insertion per gadget: Steiner vertices inserted / (n log2 Delta) in [" + fmt(lo) + ", " + fmt(hi) +
               "] >= c0 = 1/(2 log2(2 rho)) = " + fmt(c0) + "; not falling as Delta grows; at Delta = 2^" + std::to_string(common) + " n = 1: " +
@@ -274,6 +339,7 @@ Verdict t343(const Options& o, bool lower_bound) {
   std::vector<int> ks = o.quick ? std::vector<int>{10, 20, 30} : std::vector<int>{10, 20, 30, 40};
   auto base = base_input(o.quick ? 16 : 40, o.seed + 2);
   std::vector<double> per_log, steiner;
+  svg::Series series{lower_bound ? "Steiner changes on insert" : "operations touched per update (mean of insert, erase)", {}};
   for (int k : ks) {
     WellSpacedSet<2> ws(base);
     Point<2> q = close_to(base[0], k);
@@ -283,9 +349,21 @@ Verdict t343(const Options& o, bool lower_bound) {
     double changes = double(a.steiner_inserted + a.steiner_deleted);
     per_log.push_back(touched / k);
     steiner.push_back(changes);
+    series.points.push_back({double(k), lower_bound ? changes : touched});
     v.figure("Delta=2^" + std::to_string(k) + (lower_bound ? " Steiner changes on insert, /log2" : " ops per update, /log2"),
              lower_bound ? fmt(changes) + ", " + fmt(changes / k) : fmt(touched) + ", " + fmt(touched / k));
   }
+  svg::Plot p;
+  p.title = lower_bound ? "L3.4.4: Steiner changes for one insertion next to a vertex" : "T3.4.3: operations per dynamic update";
+  p.x = svg::linear_axis("log2 Delta", "bits of spread");
+  p.y = svg::linear_axis(lower_bound ? "Steiner vertices inserted + deleted" : "operations touched per update");
+  p.series = {series};
+  if (auto b = svg::proportional_bound(lower_bound ? "c log2 Delta, c = min (lower bound)" : "c log2 Delta, c = max (upper bound)",
+                                       series, !lower_bound))
+    p.bounds.push_back(*b);
+  if (!lower_bound)
+    if (auto b = svg::proportional_bound("c log2 Delta, c = min", series, false)) p.bounds.push_back(*b);
+  v.plot(std::move(p));
   if (lower_bound) {
     v.pass = steiner.back() >= 1.5 * steiner.front();
     v.summary = "insert next to an input vertex (one gadget): Steiner changes grow with log2 Delta (Omega(log Delta))";
@@ -306,6 +384,7 @@ Verdict speed(const Options& o) {
   const double target = o.quick ? 1 : 1000;
   int pairs = o.quick ? 5 : 20;
   v.pass = true;
+  svg::Series ratio_s{"from-scratch / update time", {}};
   for (std::size_t n : sizes) {
     auto pts = gen::points<2>(gen::Kind::uniform, n + pairs, o.seed + 3);
     std::vector<Point<2>> in(pts.begin(), pts.begin() + n);
@@ -318,9 +397,20 @@ Verdict speed(const Options& o) {
     v.figure(at + "from-scratch seconds", fmt(build));
     v.figure(at + "mean update seconds", fmt(upd));
     v.figure(at + "speed ratio (scratch/update)", fmt(build / upd));
+    ratio_s.points.push_back({double(n), build / upd});
     v.figure(at + "mean operations touched per update", fmt(u.mean_touched));
     v.pass = v.pass && build / upd > 1;
     if (n == sizes.back()) v.pass = v.pass && build / upd >= target;
+  }
+  {
+    svg::Plot p;
+    p.title = "T3.4.3-speed: one update vs StableWS from scratch (2D uniform)";
+    p.x = svg::log_axis("n", "input points");
+    p.y = svg::log_axis("time ratio", "from-scratch / update");
+    p.series = {ratio_s};
+    p.bounds.push_back(svg::constant_bound(o.quick ? "pass bound (quick): 1" : "target: 1000", target, double(sizes.front()) / 2,
+                                           double(sizes.back()) * 2));
+    v.plot(std::move(p));
   }
   v.summary = o.quick ? "2D uniform: one insertion/deletion with PropagateWS vs StableWS from scratch (update must be faster)"
                       : "2D uniform: one insertion/deletion with PropagateWS vs StableWS from scratch; target >= 1000x at n = 1e5";

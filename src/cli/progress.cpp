@@ -26,7 +26,13 @@ void Progress::message(const std::string& what) {
 void Progress::step(std::size_t i, std::size_t n, const std::string& what) {
   if (!enabled_) return;
   if (i + 1 < n && last_ >= 0 && now() - last_ < 0.1) return;
-  message("[" + std::to_string(i + 1) + "/" + std::to_string(n) + "] " + what);
+  std::string line = "[";
+  line += std::to_string(i + 1);
+  line += '/';
+  line += std::to_string(n);
+  line += "] ";
+  line += what;
+  message(line);
 }
 
 void Progress::done() {

@@ -21,6 +21,22 @@ std::optional<Series> proportional_bound(const std::string& name, const Series& 
   return Series{name, {{x0, *c * x0}, {x1, *c * x1}}};
 }
 
+Axis linear_axis(std::string label, std::string unit) {
+  Axis a;
+  a.label = std::move(label), a.unit = std::move(unit);
+  return a;
+}
+Axis log_axis(std::string label, std::string unit) {
+  Axis a = linear_axis(std::move(label), std::move(unit));
+  a.log = true;
+  return a;
+}
+Axis category_axis(std::string label, std::vector<std::string> categories) {
+  Axis a = linear_axis(std::move(label));
+  a.categories = std::move(categories);
+  return a;
+}
+
 Series constant_bound(const std::string& name, double c, double x0, double x1) { return Series{name, {{x0, c}, {x1, c}}}; }
 
 namespace {
@@ -94,7 +110,9 @@ std::string tick_text(double t, const Scale& s) {
 }  // namespace
 
 std::string render(const Plot& plot, double width, double height) {
-  const double left = 72, right = 190, top = 34, bottom = 54;
+  // the legend goes below the axes, one line per series and bound (long names never clip)
+  const std::size_t entries = plot.series.size() + plot.bounds.size();
+  const double left = 72, right = 24, top = 34, bottom = 54, legend_height = 18.0 * double(entries) + 8;
   const double x0 = left, x1 = width - right, y0 = height - bottom, y1 = top;
   std::vector<double> xs, ys;
   std::size_t hidden = 0;
@@ -111,9 +129,9 @@ std::string render(const Plot& plot, double width, double height) {
   auto X = [&](double v) { return sx.map(v, x0, x1); };
   auto Y = [&](double v) { return sy.map(v, y0, y1); };
 
-  Document d(width, height);
+  Document d(width, height + legend_height);
   d.title(plot.title);
-  d.rect(0, 0, width, height, style("none", "#ffffff"));
+  d.rect(0, 0, width, height + legend_height, style("none", "#ffffff"));
   d.text(width / 2, 20, plot.title, text_style(14, "middle", 0, "#222", true));
   // grid and ticks
   Style grid = style("#e4e4e4", "none", 1);
@@ -133,12 +151,12 @@ std::string render(const Plot& plot, double width, double height) {
   d.text((x0 + x1) / 2, height - 14, plot.x.text(), text_style(12, "middle"));
   d.text(18, (y0 + y1) / 2, plot.y.text(), text_style(12, "middle", -90));
 
-  // series, then bounds; legend on the right
-  double ly = top + 8;
+  // series, then bounds; legend below
+  double ly = height + 4;
   auto legend = [&](const std::string& name, const Style& s, bool marker) {
-    d.line(x1 + 14, ly, x1 + 38, ly, s);
-    if (marker) d.circle(x1 + 26, ly, 3.5, style(s.stroke, s.stroke));
-    d.text(x1 + 44, ly + 4, name, text_style(11));
+    d.line(x0, ly, x0 + 24, ly, s);
+    if (marker) d.circle(x0 + 12, ly, 3.5, style(s.stroke, s.stroke));
+    d.text(x0 + 32, ly + 4, name, text_style(11));
     ly += 18;
   };
   std::size_t colour = 0;
@@ -165,7 +183,7 @@ std::string render(const Plot& plot, double width, double height) {
     if (line.size() > 1) d.polyline(line, st, {{"class", "bound"}, {"data-series", s.name}});
     legend(s.name, st, false);
   }
-  if (hidden) d.text(x1 + 14, ly + 8, std::to_string(hidden) + " point(s) not drawable", text_style(11, "start", 0, "#a00"));
+  if (hidden) d.text(x1, top - 6, std::to_string(hidden) + " point(s) not drawable", text_style(11, "end", 0, "#a00"));
   return d.str();
 }
 

@@ -30,6 +30,10 @@ struct Axis {
   std::string text() const { return unit.empty() ? label : label + " (" + unit + ")"; }
 };
 
+Axis linear_axis(std::string label, std::string unit = "");
+Axis log_axis(std::string label, std::string unit = "");
+Axis category_axis(std::string label, std::vector<std::string> categories);
+
 struct Plot {
   std::string title;
   Axis x, y;
