@@ -1,0 +1,151 @@
+// The claims report (src/audit/ledger, report): the ledger parser on hand-written tables, the
+// embedded ledger against an independent line count of spec/claims.md, and a real quick audit's
+// report whose plot markers must equal the points of its JSON (read back with Boost.PropertyTree,
+// sharing no code with the writers).
+#include <gtest/gtest.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+#include <boost/property_tree/xml_parser.hpp>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "audit/audit.hpp"
+#include "audit/ledger.hpp"
+#include "audit/report.hpp"
+
+#ifndef KMR_CLAIMS_MD
+#error "KMR_CLAIMS_MD (path of spec/claims.md) is defined by tests/audit/CMakeLists.txt"
+#endif
+
+namespace {
+
+using namespace kmr::audit;
+namespace pt = boost::property_tree;
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+TEST(Ledger, ParsesSectionsRowsAndEscapedPipes) {
+  const char* md =
+      "# Claims ledger\n\nintro | not a table\n\n## Chapter A (§1)\n\n| ID | claim | where | check | tests | status |\n"
+      "|---|---|---|---|---|---|\n| X1 | size \\|s\\| grows | §1.2 | brute force | `Suite.X1_Test` | checked |\n"
+      "| X2 | two | §1.3 | — | — | todo: not built |\n\n## Empty section\n\ntext\n\n## Chapter B\n"
+      "| ID | claim | where | check | tests | status |\n|---|---|---|---|---|---|\n| Y1 | y | §2 | c | t | measured: 3x |\n";
+  auto s = parse_ledger(md);
+  ASSERT_EQ(s.size(), 2u);  // the section without rows is dropped
+  EXPECT_EQ(s[0].title, "Chapter A (§1)");
+  ASSERT_EQ(s[0].rows.size(), 2u);
+  EXPECT_EQ(s[0].rows[0].claim, "size |s| grows");
+  EXPECT_EQ(s[0].rows[0].tests, "`Suite.X1_Test`");
+  EXPECT_EQ(s[0].rows[1].status, "todo: not built");
+  EXPECT_EQ(s[0].rows[1].line, 10);
+  EXPECT_EQ(s[1].rows.at(0).id, "Y1");
+  EXPECT_THROW(parse_ledger("## A\n| a | b | c |\n"), std::runtime_error);
+}
+
+TEST(Ledger, EmbeddedLedgerIsSpecClaimsMdWithEveryRow) {
+  std::string file = slurp(KMR_CLAIMS_MD);
+  EXPECT_EQ(std::string(claims_ledger()), file) << "rebuild: the embedded ledger is stale";
+  // independent count: table lines that are neither a header nor the |---| rule
+  std::size_t rows = 0;
+  std::istringstream in(file);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("| ", 0) == 0 && line.rfind("| ID |", 0) != 0) ++rows;
+  std::size_t parsed = 0;
+  for (const auto& s : parse_ledger(file)) parsed += s.rows.size();
+  EXPECT_EQ(parsed, rows);
+  EXPECT_GT(rows, 50u);
+}
+
+TEST(Ledger, ChecksBelongToTheirRow) {
+  EXPECT_TRUE(check_belongs_to("T3.4.3", "T3.4.3"));
+  EXPECT_TRUE(check_belongs_to("T3.4.3-speed", "T3.4.3"));
+  EXPECT_FALSE(check_belongs_to("T3.3.11", "T3.3.1"));
+  EXPECT_FALSE(check_belongs_to("T3.4.3", "T3.4.3-speed"));
+}
+
+TEST(Report, CtestRegexNamesTheTestsOfACell) {
+  EXPECT_EQ(ctest_regex("`WellspacedProp.L3_4_2_*`, `tests/sac/runtime_test.cpp` (S1_3_EqualWrite…)"),
+            "S1_3_EqualWrite|WellspacedProp\\.L3_4_2_");
+  EXPECT_EQ(ctest_regex("`tests/exact` Dyadic.*, Integer.*"), "Dyadic\\.|Integer\\.");
+  EXPECT_EQ(ctest_regex("—"), "");
+}
+
+// A quick audit of two checks with plots: every ledger ID is in both documents, and every SVG
+// marker equals a point of the JSON (same claim, same plot, same series, same order).
+TEST(Report, PlotMarkersEqualTheJsonPointsAndEveryLedgerIdIsListed) {
+  Options o;
+  o.quick = true;
+  o.only = "L3.4.4";
+  auto results = run_checks(o);
+  o.only = "S1.3.4";
+  auto more = run_checks(o);
+  results.insert(results.end(), more.begin(), more.end());
+  o.only = "";
+  auto dir = std::filesystem::temp_directory_path() / "kmr_report_test";
+  std::filesystem::remove_all(dir);
+  auto ledger = parse_ledger(claims_ledger());
+  ReportFiles files = write_report(dir.string(), results, o, ledger);
+  std::ostringstream js;
+  write_json(results, js);
+  pt::ptree json;
+  std::istringstream jin(js.str());
+  pt::read_json(jin, json);
+
+  std::string md = slurp(dir / "report.md"), html = slurp(dir / "index.html");
+  for (const auto& s : ledger)
+    for (const auto& row : s.rows) {
+      EXPECT_NE(md.find(std::string("\n### ").append(row.id).append(" — ")), std::string::npos) << row.id;
+      EXPECT_NE(html.find(std::string("<h3>").append(row.id).append(" <span")), std::string::npos) << row.id;
+    }
+  std::size_t svg_index = 0, points = 0;
+  for (const auto& [unused, check] : json) {
+    std::string claim = check.get<std::string>("claim");
+    std::size_t plot_no = 0;
+    for (const auto& [u2, plot] : check.get_child("plots")) {
+      ++plot_no;
+      std::string file = "plot-" + claim + "-" + std::to_string(plot_no) + ".svg";
+      ASSERT_NE(std::find(files.svgs.begin(), files.svgs.end(), file), files.svgs.end()) << file;
+      ++svg_index;
+      EXPECT_NE(md.find("](" + file + ")"), std::string::npos);
+      EXPECT_NE(html.find("src=\"" + file + "\""), std::string::npos);
+      pt::ptree svg;
+      std::ifstream in(dir / file);
+      pt::read_xml(in, svg);
+      std::vector<std::tuple<std::string, std::string, std::string>> marks;
+      std::function<void(const pt::ptree&)> walk = [&](const pt::ptree& n) {
+        for (const auto& [name, c] : n) {
+          if (name == "circle" && c.get("<xmlattr>.class", "") == "pt")
+            marks.emplace_back(c.get<std::string>("<xmlattr>.data-series"), c.get<std::string>("<xmlattr>.data-x"),
+                               c.get<std::string>("<xmlattr>.data-y"));
+          walk(c);
+        }
+      };
+      walk(svg);
+      std::size_t k = 0;
+      for (const auto& [u3, series] : plot.get_child("series"))
+        for (const auto& [u4, point] : series.get_child("points")) {
+          ASSERT_LT(k, marks.size()) << file;
+          auto it = point.begin();
+          std::string x = it->second.data(), y = (++it)->second.data();
+          EXPECT_EQ(std::get<0>(marks[k]), series.get<std::string>("name")) << file;
+          EXPECT_EQ(std::stod(std::get<1>(marks[k])), std::stod(x)) << file;
+          EXPECT_EQ(std::stod(std::get<2>(marks[k])), std::stod(y)) << file;
+          ++k, ++points;
+        }
+      EXPECT_EQ(k, marks.size()) << file;
+    }
+    EXPECT_EQ(plot_no, claim == "L3.4.4" ? 1u : 2u) << claim;
+  }
+  EXPECT_EQ(svg_index, files.svgs.size());
+  EXPECT_GE(points, 3u + 7u);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace

@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# `kmr audit --report`: every SVG parses as XML, index.html passes `xmllint --html` without a
+# message, every ID of spec/claims.md (read here with awk, not with kmr's parser) has an entry,
+# every ctest replay command names at least one registered test; `--only NOSUCH` exits 2 listing
+# the known IDs; `kmr --version`; no progress output when stderr is not a terminal.
+# Usage: report_test.sh path/to/kmr path/to/spec/claims.md path/to/build
+set -u
+kmr=$1 claims=$2 build=$3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0 failed=0
+ok() { passed=$((passed+1)); }
+bad() { failed=$((failed+1)); echo "FAIL $*"; }
+
+"$kmr" audit --quick --only L3.4.4 --report "$tmp/r" --json "$tmp/a.json" >"$tmp/out" 2>"$tmp/err"
+rc=$?
+[ $rc -eq 0 ] && ok || bad "audit --report rc=$rc"
+[ -s "$tmp/err" ] && bad "stderr not empty without a terminal: $(head -c 300 "$tmp/err")" || ok
+n_svg=0
+for f in "$tmp"/r/*.svg; do
+  [ -e "$f" ] || continue
+  n_svg=$((n_svg+1))
+  xmllint --noout "$f" 2>"$tmp/x" && ok || bad "$(basename "$f") is not well-formed XML: $(head -3 "$tmp/x")"
+done
+[ $n_svg -ge 1 ] && ok || bad "no SVG plot written"
+xmllint --html --noout "$tmp/r/index.html" 2>"$tmp/h"
+if [ $? -eq 0 ] && [ ! -s "$tmp/h" ]; then ok; else bad "index.html: $(head -5 "$tmp/h")"; fi
+grep -q 'kmr_version":"' "$tmp/a.json" && ok || bad "JSON without kmr_version"
+grep -q "src=\"http\|<script\|<link" "$tmp/r/index.html" && bad "index.html fetches something or runs a script" || ok
+# every ledger ID: first cell of each table row that is neither the header nor the rule
+awk -F'|' '/^\| / && !/^\| ID \|/ { gsub(/^ +| +$/, "", $2); print $2 }' "$claims" >"$tmp/ids"
+[ "$(wc -l <"$tmp/ids")" -gt 50 ] && ok || bad "awk found too few ledger IDs"
+while read -r id; do
+  grep -qF "### $id — " "$tmp/r/report.md" || { bad "report.md lacks $id"; continue; }
+  grep -qF "<h3>$id <span" "$tmp/r/index.html" || { bad "index.html lacks $id"; continue; }
+  ok
+done <"$tmp/ids"
+# every ctest replay command runs at least one registered test
+ctest --test-dir "$build" -N >"$tmp/tests" 2>/dev/null
+sed -n "s/.*ctest --test-dir build -R '\([^']*\)'.*/\1/p" "$tmp/r/report.md" | sort -u >"$tmp/regexes"
+[ -s "$tmp/regexes" ] && ok || bad "no ctest replay command in report.md"
+while read -r re; do
+  grep -Eq "Test +#[0-9]+: .*($re)" "$tmp/tests" && ok || bad "replay regex '$re' matches no ctest test"
+done <"$tmp/regexes"
+# --only without a match
+"$kmr" audit --only NOSUCH >"$tmp/out" 2>"$tmp/err"
+rc=$?
+if [ $rc -eq 2 ] && grep -q "no claim matches --only 'NOSUCH'" "$tmp/err" && grep -q "T3.4.3" "$tmp/err" && [ ! -s "$tmp/out" ]; then ok
+else bad "--only NOSUCH: rc=$rc, stderr: $(cat "$tmp/err")"; fi
+v=$("$kmr" --version) && [[ "$v" =~ ^kmr\ [0-9]+\.[0-9]+ ]] && ok || bad "kmr --version printed '$v'"
+"$kmr" audit --report /proc/nonexistent/x --only L3.4.4 --quick >/dev/null 2>"$tmp/err"
+[ $? -eq 2 ] && grep -q "cannot create report directory" "$tmp/err" && ok || bad "unwritable --report: $(cat "$tmp/err")"
+echo "report_test: $passed passed, $failed failed"
+[ $failed -eq 0 ]

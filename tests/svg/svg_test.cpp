@@ -1,0 +1,145 @@
+// The SVG writer and plots (src/svg): documents parse as XML (xmllint), text is escaped, and a
+// plot's markers carry exactly the points it was given (read back with an XML parser that shares
+// no code with the writer: Boost.PropertyTree).
+#include <gtest/gtest.h>
+
+#include <boost/property_tree/ptree.hpp>
+#include <boost/property_tree/xml_parser.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "svg/plot.hpp"
+#include "svg/svg.hpp"
+
+namespace {
+
+using namespace kmr::svg;
+namespace pt = boost::property_tree;
+
+bool xmllint_accepts(const std::string& text) {
+  auto path = std::filesystem::temp_directory_path() / ("kmr_svg_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                                                       std::to_string(std::rand()) + ".svg");
+  std::ofstream(path) << text;
+  int rc = std::system(("xmllint --noout '" + path.string() + "' 2>/dev/null").c_str());
+  std::filesystem::remove(path);
+  return rc == 0;
+}
+
+struct Marker {
+  std::string series;
+  double x, y;
+};
+void collect(const pt::ptree& node, std::vector<Marker>& out, int& bounds) {
+  for (const auto& [name, child] : node) {
+    if (name == "circle" && child.get("<xmlattr>.class", "") == "pt")
+      out.push_back({child.get<std::string>("<xmlattr>.data-series"), std::stod(child.get<std::string>("<xmlattr>.data-x")),
+                     std::stod(child.get<std::string>("<xmlattr>.data-y"))});
+    if (name == "polyline" && child.get("<xmlattr>.class", "") == "bound") ++bounds;
+    collect(child, out, bounds);
+  }
+}
+std::vector<Marker> markers(const std::string& svg, int* bounds = nullptr) {
+  std::istringstream in(svg);
+  pt::ptree tree;
+  pt::read_xml(in, tree);
+  std::vector<Marker> out;
+  int b = 0;
+  collect(tree, out, b);
+  if (bounds) *bounds = b;
+  return out;
+}
+
+TEST(Svg, EscapesMarkupInTextAndAttributes) {
+  EXPECT_EQ(escape("a<b & \"c\" 'd'>"), "a&lt;b &amp; &quot;c&quot; &apos;d&apos;&gt;");
+  Document d(100, 50);
+  d.title("<title> & co");
+  d.text(1, 2, "x < y && \"z\"");
+  d.circle(5, 5, 1, Style{}, {{"data-name", "a\"b<c"}}, "tip <>");
+  std::string s = d.str();
+  EXPECT_TRUE(xmllint_accepts(s)) << s;
+  EXPECT_EQ(s.find("x < y"), std::string::npos);
+  EXPECT_NE(s.find("viewBox=\"0 0 100 50\""), std::string::npos);
+  EXPECT_NE(s.find("xmlns=\"http://www.w3.org/2000/svg\""), std::string::npos);
+}
+
+TEST(Svg, NumbersAreFiniteAndRoundTrip) {
+  EXPECT_THROW(number(std::nan("")), std::invalid_argument);
+  EXPECT_THROW(exact_number(std::numeric_limits<double>::infinity()), std::invalid_argument);
+  EXPECT_EQ(number(-0.0), "0");
+  for (double x : {0.1, 1.0 / 3, 1e-300, 123456789.125, -2.5e17}) EXPECT_EQ(std::stod(exact_number(x)), x);
+  Document d(10, 10);
+  EXPECT_THROW(d.line(0, 0, std::nan(""), 1, Style{}), std::invalid_argument);
+  EXPECT_THROW(Document(0, 1), std::invalid_argument);
+}
+
+TEST(Svg, OpenGroupsAreClosedAndUnbalancedEndThrows) {
+  Document d(10, 10);
+  d.begin_group({{"class", "a"}});
+  d.begin_group({});
+  EXPECT_TRUE(xmllint_accepts(d.str()));
+  d.end_group();
+  d.end_group();
+  EXPECT_THROW(d.end_group(), std::logic_error);
+}
+
+TEST(Plot, MarkersCarryExactlyTheGivenPoints) {
+  Plot p;
+  p.title = "ops <per> update & more";
+  p.x = linear_axis("log2 Δ", "bits");
+  p.y = linear_axis("operations");
+  p.series = {{"a", {{10, 1.0 / 3}, {20, 2.75}, {30, 1e5}}}, {"b \"quoted\"", {{10, -4}, {15, 0.1}}}};
+  auto b = proportional_bound("c x", p.series[0], true);
+  ASSERT_TRUE(b);
+  p.bounds.push_back(*b);
+  p.bounds.push_back(constant_bound("one", 1, 10, 30));
+  std::string s = render(p);
+  ASSERT_TRUE(xmllint_accepts(s)) << s;
+  int bounds = 0;
+  auto m = markers(s, &bounds);
+  ASSERT_EQ(m.size(), 5u);
+  std::size_t k = 0;
+  for (const auto& series : p.series)
+    for (const auto& pt : series.points) {
+      EXPECT_EQ(m[k].series, series.name);
+      EXPECT_EQ(m[k].x, pt.x);
+      EXPECT_EQ(m[k].y, pt.y);
+      ++k;
+    }
+  EXPECT_EQ(bounds, 2);
+}
+
+TEST(Plot, ProportionalBoundIsTheTightestThroughTheOrigin) {
+  Series s{"s", {{10, 40}, {20, 100}, {40, 120}, {0, 7}}};  // y/x = 4, 5, 3; x = 0 ignored
+  auto up = proportional_bound("u", s, true), lo = proportional_bound("l", s, false);
+  ASSERT_TRUE(up && lo);
+  EXPECT_EQ(up->points.front().x, 10);
+  EXPECT_EQ(up->points.back().x, 40);
+  EXPECT_EQ(up->points.back().y, 200);  // 5 · 40
+  EXPECT_EQ(lo->points.front().y, 30);  // 3 · 10
+  EXPECT_FALSE(proportional_bound("none", Series{"e", {{0, 1}}}, true));
+}
+
+TEST(Plot, UndrawablePointsAreLeftOutAndCounted) {
+  Plot p;
+  p.title = "log";
+  p.x = category_axis("program", {"map", "sum"});
+  p.y = log_axis("speedup");
+  p.series = {{"s", {{0, 100}, {1, 0}}}, {"t", {{0, std::numeric_limits<double>::quiet_NaN()}, {1, 1e4}}}};
+  std::string s = render(p);
+  ASSERT_TRUE(xmllint_accepts(s)) << s;
+  auto m = markers(s);
+  ASSERT_EQ(m.size(), 2u);
+  EXPECT_EQ(m[0].y, 100);
+  EXPECT_EQ(m[1].y, 1e4);
+  EXPECT_NE(s.find("2 point(s) not drawable"), std::string::npos);
+  EXPECT_NE(s.find(">map<"), std::string::npos);
+  // an empty plot is still a valid document
+  Plot empty;
+  EXPECT_TRUE(xmllint_accepts(render(empty)));
+}
+
+}  // namespace
