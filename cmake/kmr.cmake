@@ -1,11 +1,26 @@
 # Helpers shared by every folder. One way to add a layer, a test or a harness.
 
-# kmr_layer(NAME SOURCES... DEPS lower layers...)  -> static library kmr_NAME
+include(GNUInstallDirs)
+
+# kmr_install_layer(TARGET): installs library kmr_X as kmr::X (export set kmrTargets, see
+# cmake/kmrConfig.cmake.in) with the headers of the calling folder under include/kmr/<folder>/.
+function(kmr_install_layer target)
+  string(REGEX REPLACE "^kmr_" "" short ${target})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${short})
+  add_library(kmr::${short} ALIAS ${target})
+  install(TARGETS ${target} EXPORT kmrTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+  get_filename_component(folder ${CMAKE_CURRENT_SOURCE_DIR} NAME)
+  install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/kmr/${folder} FILES_MATCHING PATTERN "*.hpp")
+endfunction()
+
+# kmr_layer(NAME SOURCES... DEPS lower layers...)  -> static library kmr_NAME, installed as kmr::NAME
 function(kmr_layer name)
   cmake_parse_arguments(L "" "" "SOURCES;DEPS" ${ARGN})
   add_library(kmr_${name} STATIC ${L_SOURCES})
-  target_include_directories(kmr_${name} PUBLIC ${PROJECT_SOURCE_DIR}/src)
+  target_include_directories(kmr_${name} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/src>
+                                                $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/kmr>)
   target_link_libraries(kmr_${name} PUBLIC ${L_DEPS})
+  kmr_install_layer(kmr_${name})
 endfunction()
 
 # kmr_gtest(NAME LABEL label SOURCES... LIBS ...) -> GoogleTest binary, each test a ctest test.

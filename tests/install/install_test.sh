@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# The installable package: `cmake --install BUILD --prefix P`, then a project outside kmr
+# (tests/install/consumer) configures with find_package(kmr), builds against kmr::wellspaced and
+# kmr::kinetic, and runs; the installed kmr executable answers --version.
+# Usage: install_test.sh BUILD_DIR CONSUMER_SOURCE_DIR
+set -eu
+build=$1 consumer=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cmake --install "$build" --prefix "$tmp/prefix" >"$tmp/install.log"
+test -x "$tmp/prefix/bin/kmr"
+test -f "$tmp/prefix/include/kmr/wellspaced/well_spaced_set.hpp"
+"$tmp/prefix/bin/kmr" --version | grep -q '^kmr '
+gen=()
+command -v ninja >/dev/null && gen=(-G Ninja)
+cmake -S "$consumer" -B "$tmp/build" "${gen[@]}" -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_BUILD_TYPE=Release >"$tmp/configure.log" ||
+  { cat "$tmp/configure.log"; exit 1; }
+cmake --build "$tmp/build" >"$tmp/build.log" || { cat "$tmp/build.log"; exit 1; }
+out=$("$tmp/build/consumer")
+echo "$out"
+echo "$out" | grep -q '^wellspaced ok [0-9]'
+echo "$out" | grep -q '^kinetic ok 1$'
