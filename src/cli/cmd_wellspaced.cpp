@@ -11,6 +11,8 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
+#include "cli/wellspaced_picture.hpp"
 #include "exact/error.hpp"
 #include "wellspaced/well_spaced_set.hpp"
 
@@ -94,11 +96,19 @@ int run(const Args& args, const std::string& input_path, Params params) {
     }
   }
   if (input.size() < 2) throw InputError(input_path + ": at least 2 input points are needed");
+  std::ofstream picture;  // opened before the run, so that a bad path fails fast
+  if (auto f = args.value("svg")) {
+    picture.open(*f);
+    if (!picture) throw InputError("cannot write --svg file '" + *f + "'");
+  }
+  Progress progress(args.has("quiet"));
+  progress.message("kmr wellspaced: StableWS on " + std::to_string(input.size()) + " points");
   WellSpacedSet<D> ws(input, params);
   Stats cstats = ws.stats();
   bool check = args.has("check");
   std::vector<std::pair<UpdateStats, double>> ustats;
   for (const Update& u : updates) {
+    progress.step(ustats.size(), updates.size(), "kmr wellspaced: updates");
     UpdateStats s;
     try {
       s = u.insert ? ws.insert(u.p) : ws.erase(u.p);
@@ -126,6 +136,18 @@ int run(const Args& args, const std::string& input_path, Params params) {
     }
     ustats.emplace_back(s, scratch_seconds);
   }
+  if (picture.is_open()) {
+    if constexpr (D == 2) {
+      progress.message("kmr wellspaced: drawing " + *args.value("svg"));
+      char caption[160];
+      std::snprintf(caption, sizeof caption, "kmr wellspaced %s: rho = %g, beta = %g; Voronoi cells clipped to [0,1]^2",
+                    input_path.substr(input_path.find_last_of('/') + 1).c_str(), params.rho, params.beta);
+      picture << wellspaced_picture(ws, caption);
+      if (!picture) throw InputError("cannot write --svg file '" + *args.value("svg") + "'");
+      picture.close();
+    }
+  }
+  progress.done();
   for (const auto& v : ws.vertices()) {
     for (std::size_t i = 0; i < D; ++i) std::printf("%.17g ", v.x[i]);
     std::printf("%d\n", v.is_steiner ? 1 : 0);
@@ -159,9 +181,9 @@ int run(const Args& args, const std::string& input_path, Params params) {
 }  // namespace
 
 int wellspaced_command(const Argv& argv) {
-  Args args(argv, {"dim", "rho", "beta", "updates", "stats"}, {"check"});
+  Args args(argv, {"dim", "rho", "beta", "updates", "stats", "svg"}, {"check", "quiet"});
   if (args.help()) {
-    std::cout << "usage: kmr wellspaced --dim D [--rho R] [--beta B] [--updates FILE] [--check] [--stats FILE] INPUT\n"
+    std::cout << "usage: kmr wellspaced --dim D [--rho R] [--beta B] [--updates FILE] [--check] [--stats FILE] [--svg FILE] [--quiet] INPUT\n"
                  "Builds a rho-well-spaced, size-optimal superset of the points in INPUT (thesis Ch. 3, StableWS),\n"
                  "then applies dynamic updates (PropagateWS). D is 2, 3 or 4.\n"
                  "  INPUT       one point per line: D decimal coordinates in [0,1]; '#' starts a comment\n"
@@ -171,6 +193,9 @@ int wellspaced_command(const Argv& argv) {
                  "  --check     after every update compare with a from-scratch run (output and computation\n"
                  "              graph); exit status 1 on a difference\n"
                  "  --stats     write construction and per-update counts as JSON\n"
+                 "  --svg       (2D) draw the final output to FILE: Voronoi cells clipped to [0,1]^2, input\n"
+                 "              vertices filled, Steiner vertices open\n"
+                 "  --quiet     no progress on stderr (shown only when stderr is a terminal)\n"
                  "stdout: the output vertices, 'x1 .. xD flag' with %.17g coordinates, flag 1 = Steiner.\n"
                  "Bad input: a message naming the line, exit status 2, nothing applied.\n";
     return 0;
@@ -184,6 +209,7 @@ int wellspaced_command(const Argv& argv) {
   else if (args.value("rho")) params.beta = std::max(params.beta, 2 * params.rho);
   if (!(params.rho > 1)) throw InputError("--rho must be > 1");
   if (!(params.beta > params.rho)) throw InputError("--beta must be > --rho");
+  if (args.value("svg") && dim != 2) throw InputError("--svg draws 2D outputs only (use --dim 2)");
   const std::string& input = args.positional()[0];
   switch (dim) {
     case 2: return run<2>(args, input, params);
