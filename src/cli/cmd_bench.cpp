@@ -1,34 +1,50 @@
 // kmr bench <subcommand>: performance measurements. Subcommands: sac (self-adjusting programs, §1.3).
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/progress.hpp"
 #include "exact/error.hpp"
 #include "sacprograms/bench.hpp"
+#include "sacprograms/programs.hpp"
 
 namespace kmr::cli {
 
 namespace {
 int bench_sac(const Argv& argv) {
-  Args args(argv, {"n", "edits", "seed", "program"}, {"json"});
+  Args args(argv, {"n", "edits", "seed", "program"}, {"json", "quiet"});
   if (args.help()) {
-    std::cout << "usage: kmr bench sac [--n N] [--edits E] [--seed S] [--program NAME] [--json]\n"
+    std::cout << "usage: kmr bench sac [--n N] [--edits E] [--seed S] [--program NAME] [--json] [--quiet]\n"
                  "Runs each self-adjusting program (map, filter, sum, quicksort, mergesort, quickhull,\n"
                  "exptree) and its static twin on n seeded random elements; then E random single-element\n"
                  "insertions/deletions, each followed by change propagation. Reports static_s, initial_s,\n"
                  "overhead = initial_s / static_s, edit_s (mean per edit), speedup = static_s / edit_s,\n"
-                 "trace_nodes, bytes_per_node. Exit status 1 if an output differs from the static twin.\n";
+                 "trace_nodes, bytes_per_node. Exit status 1 if an output differs from the static twin.\n"
+                 "Progress goes to stderr when it is a terminal (--quiet: none).\n";
     return 0;
   }
   if (!args.positional().empty()) throw InputError("kmr bench sac takes no positional argument");
   auto n = static_cast<std::size_t>(args.integer("n", 100000, 0, 100000000));
   auto edits = static_cast<std::size_t>(args.integer("edits", 200, 0, 100000000));
   auto seed = static_cast<std::uint64_t>(args.integer("seed", 20121, 0, 1LL << 62));
-  std::vector<std::string> only;
-  if (auto p = args.value("program")) only.push_back(*p);
-  auto rows = sacprograms::bench_all(n, edits, seed, only);
-  if (rows.empty()) throw InputError("kmr bench sac: unknown --program");
+  std::vector<std::string> names;
+  for (const auto& p : sacprograms::list_programs()) names.push_back(p.name);
+  names.push_back("exptree");
+  if (auto p = args.value("program")) {
+    if (std::find(names.begin(), names.end(), *p) == names.end()) throw InputError("kmr bench sac: unknown --program");
+    names = {*p};
+  }
+  // One program at a time so that progress can name it; the memory guard still refuses before any run.
+  for (const auto& name : names) sacprograms::check_bench_memory(name, n, seed);
+  Progress progress(args.has("quiet"));
+  std::vector<sacprograms::BenchRow> rows;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    progress.message("kmr bench sac [" + std::to_string(i + 1) + "/" + std::to_string(names.size()) + "] " + names[i]);
+    for (auto& r : sacprograms::bench_all(n, edits, seed, {names[i]})) rows.push_back(std::move(r));
+  }
+  progress.done();
   bool ok = true;
   for (const auto& r : rows) ok = ok && r.output_ok;
   if (args.has("json")) {
