@@ -18,10 +18,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <string>
 #include <cstdio>
 #include <random>
 #include <vector>
 
+#include "audit/audit.hpp"
 #include "geometry/predicates.hpp"
 #include "poly/sturm.hpp"
 #ifdef KMR_BENCH_WITH_ORACLE
@@ -108,8 +112,9 @@ void BM_cgal_isolate_first_odd_root(benchmark::State& state) {
 BENCHMARK(BM_kmr_next_failure_after)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 BENCHMARK(BM_cgal_isolate_first_odd_root)->Unit(benchmark::kMillisecond)->Repetitions(5)->ReportAggregatesOnly(true);
 
+// Per-certificate times in ns (mean of 5 repetitions each), sorted.
 template <class F>
-double median_ns(F&& f, std::size_t n) {
+std::vector<double> times_ns(F&& f, std::size_t n) {
   std::vector<double> t;
   for (std::size_t i = 0; i < n; ++i) {
     auto a = std::chrono::steady_clock::now();
@@ -117,13 +122,56 @@ double median_ns(F&& f, std::size_t n) {
     auto b = std::chrono::steady_clock::now();
     t.push_back(std::chrono::duration<double, std::nano>(b - a).count() / 5);
   }
-  std::nth_element(t.begin(), t.begin() + static_cast<long>(n / 2), t.end());
-  return t[n / 2];
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+// The run as an audit result (claim I2-root-solver-speed) for `kmr audit --include FILE --report DIR`.
+void write_audit_json(const std::string& path, const std::vector<double>& a, const std::vector<double>& b, int certificates) {
+  namespace au = kmr::audit;
+  au::Result r;
+  r.claim = "I2-root-solver-speed";
+  r.title = "next_failure_after vs CGAL Algebraic_kernel_d_1 on §2.4 orient3d certificates (bench/roots/roots_bench)";
+  double ma = a[a.size() / 2], mb = b[b.size() / 2];
+  r.verdict.pass = ma / mb <= 0.5;
+  r.replay = "build/bin/roots_bench --audit-json " + path + "  (then kmr audit --include " + path + " --report DIR)";
+  r.verdict.summary = std::to_string(certificates) + " cubic certificates, median per certificate; target kmr/CGAL <= 0.5";
+  r.verdict.figure("median kmr us", au::fmt(ma / 1e3));
+  r.verdict.figure("median CGAL us", au::fmt(mb / 1e3));
+  r.verdict.figure("ratio kmr/CGAL", au::fmt(ma / mb));
+  kmr::svg::Plot p;
+  p.title = "I2-root-solver-speed: time per certificate, kmr vs CGAL (quantiles)";
+  p.x = kmr::svg::linear_axis("quantile over certificates", "%");
+  p.y = kmr::svg::log_axis("time per certificate", "us");
+  kmr::svg::Series sa{"kmr next_failure_after", {}}, sb{"CGAL Algebraic_kernel_d_1", {}}, target{"target: 0.5 x CGAL", {}};
+  for (int q : {10, 25, 50, 75, 90}) {
+    double ta = a[a.size() * q / 100] / 1e3, tb = b[b.size() * q / 100] / 1e3;
+    sa.points.push_back({double(q), ta});
+    sb.points.push_back({double(q), tb});
+    target.points.push_back({double(q), tb / 2});
+  }
+  p.series = {sa, sb};
+  p.bounds = {target};
+  r.verdict.plot(std::move(p));
+  std::ofstream out(path);
+  kmr::audit::write_json({r}, out);
+  if (!out) {
+    std::fprintf(stderr, "cannot write --audit-json file '%s'\n", path.c_str());
+    std::exit(2);
+  }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::string audit_json;  // --audit-json FILE (removed before Google Benchmark reads the flags)
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--audit-json" && i + 1 < argc) {
+      audit_json = argv[i + 1];
+      for (int j = i; j + 2 <= argc; ++j) argv[j] = argv[j + 2];
+      argc -= 2;
+      break;
+    }
   const auto& ps = certificates();
   const auto& cs = cgal_certificates();
   int failures = 0;
@@ -143,8 +191,10 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
-  double a = median_ns([&](std::size_t i) { return ours(ps[i]); }, ps.size());
-  double b = median_ns([&](std::size_t i) { return cgal(cs[i]); }, cs.size());
+  auto ta = times_ns([&](std::size_t i) { return ours(ps[i]); }, ps.size());
+  auto tb = times_ns([&](std::size_t i) { return cgal(cs[i]); }, cs.size());
+  double a = ta[ta.size() / 2], b = tb[tb.size() / 2];
+  if (!audit_json.empty()) write_audit_json(audit_json, ta, tb, static_cast<int>(ps.size()));
   std::printf("median per certificate: kmr %.1f us, CGAL %.1f us, ratio kmr/CGAL = %.3f (target <= 0.5): %s\n",
               a / 1e3, b / 1e3, a / b, a / b <= 0.5 ? "met" : "NOT met");
   return 0;

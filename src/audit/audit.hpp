@@ -61,12 +61,17 @@ struct Result {
   std::string claim, title;
   Verdict verdict;
   double seconds = 0;
+  std::string replay;  // the command that reproduces it when it is not `kmr audit --only CLAIM` (e.g. a benchmark's)
 };
 // Runs the checks whose ID starts with options.only, in registry order (a throwing check FAILs).
 // Throws InputError naming the prefix and listing the known claim IDs when none matches.
 std::vector<Result> run_checks(const Options& options);
 void print_table(const std::vector<Result>& results, std::ostream& out);
 void write_json(const std::vector<Result>& results, std::ostream& json);
+// Reads results that write_json wrote — e.g. a benchmark's that links CGAL, which the audit does
+// not (bench/roots/roots_bench --audit-json FILE) — so that `kmr audit --include FILE` reports them
+// beside its own. Throws InputError naming the file and the problem on malformed input.
+std::vector<Result> read_json(const std::string& path);
 // 0 iff at least one check ran and every check passed.
 int status(const std::vector<Result>& results);
 

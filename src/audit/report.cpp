@@ -92,7 +92,7 @@ h1{font-size:1.6em}h2{border-bottom:2px solid #ccc;margin-top:2em}h3{margin-bott
 .claim{border:1px solid #ddd;border-radius:4px;padding:.5em 1em;margin:1em 0}
 .v{font-weight:bold;padding:0 .4em;border-radius:3px}
 .PASS{background:#d7f0d7;color:#155d15}.FAIL{background:#f7d4d4;color:#8a1010}.TODO{background:#eee;color:#555}
-.TESTS{background:#dde8f7;color:#1b3d6d}.NOTRUN{background:#f5ecd0;color:#6b5000}.NOTCHECKABLE{background:#eee;color:#555}
+.TESTS{background:#dde8f7;color:#1b3d6d}.MEASURED{background:#e6def5;color:#45226b}.NOTRUN{background:#f5ecd0;color:#6b5000}.NOTCHECKABLE{background:#eee;color:#555}
 table{border-collapse:collapse;margin:.4em 0}td,th{border:1px solid #ddd;padding:.15em .5em;text-align:left;vertical-align:top}
 code{background:#f4f4f4;padding:0 .2em}dt{font-weight:bold;margin-top:.3em}dd{margin-left:1.5em}
 img{max-width:100%;border:1px solid #eee;margin:.3em 0}
@@ -153,18 +153,20 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
       bool pass = true;
       for (const Result* r : e.results) pass = pass && r->verdict.pass;
       e.verdict = pass ? "PASS" : "FAIL";
-      for (const Result* r : e.results) e.replay.push_back(audit_command(r->claim, options));
+      for (const Result* r : e.results) e.replay.push_back(r->replay.empty() ? audit_command(r->claim, options) : r->replay);
     } else if (status.rfind("todo", 0) == 0) {
       e.verdict = "TODO";
     } else if (status.rfind("not checkable", 0) == 0) {
       e.verdict = "NOT CHECKABLE";
+    } else if (status.rfind("measured", 0) == 0 && row->tests.find("audit") == std::string::npos) {
+      e.verdict = "MEASURED";  // by a benchmark outside the audit: its figures are the ledger's
     } else {
       e.verdict = "TESTS";
     }
     if (row) {
       std::string re = ctest_regex(row->tests);
       if (!re.empty()) e.replay.push_back("ctest --test-dir build -R '" + re + "'");
-      if (e.results.empty() && e.verdict != "TODO" && e.verdict != "NOT CHECKABLE" && row->tests.find("audit") != std::string::npos)
+      if (e.results.empty() && (e.verdict == "TESTS" || e.verdict == "MEASURED") && row->tests.find("audit") != std::string::npos)
         e.verdict = "NOT RUN";  // the ledger names an audit check that this run did not include (--only)
     }
     return e;
@@ -193,11 +195,12 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
   std::string mode = std::string(options.quick ? "--quick" : "default sizes") + ", seed " + std::to_string(options.seed) +
                      (options.only.empty() ? "" : ", --only " + options.only);
   std::string tally;
-  for (const char* v : {"PASS", "FAIL", "TESTS", "NOT RUN", "TODO", "NOT CHECKABLE"})
+  for (const char* v : {"PASS", "FAIL", "TESTS", "MEASURED", "NOT RUN", "TODO", "NOT CHECKABLE"})
     if (counts[v]) tally += (tally.empty() ? "" : ", ") + std::to_string(counts[v]) + " " + v;
   const char* legend =
       "PASS/FAIL: the `kmr audit` check(s) of the claim ran in this audit. TESTS: checked by the test suite, not by the "
-      "audit (replay with ctest; property tests run with RC_PARAMS=\"seed=20121\", which `ctest -V` prints). NOT RUN: an audit "
+      "audit (replay with ctest; property tests run with RC_PARAMS=\"seed=20121\", which `ctest -V` prints). MEASURED: by a "
+      "benchmark outside the audit; the figures are the ledger's (include a benchmark's results with `kmr audit --include FILE`). NOT RUN: an audit "
       "check exists but this audit did not run it. TODO: not checked yet (reason given). NOT CHECKABLE: see the reason.";
 
   // ---- report.md
@@ -210,7 +213,9 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
     for (const Entry& e : es) {
       std::string id = e.row ? e.row->id : e.results.front()->claim;
       md << "\n### " << id << " — " << e.verdict << "\n\n";
-      if (e.row) md << "- **Claim.** " << e.row->claim << "\n- **Where.** " << e.row->where << "\n";
+      if (e.row)
+        md << "- **Claim.** " << e.row->claim << "\n- **Where.** " << e.row->where << "\n- **How it is checked.** " << e.row->check
+           << "\n- **Tests.** " << e.row->tests << "\n";
       for (const Result* r : e.results) {
         md << "- **Verdict (" << r->claim << ").** " << (r->verdict.pass ? "PASS" : "FAIL") << " — " << r->title
            << (r->verdict.summary.empty() ? "" : ": " + r->verdict.summary) << " (" << fmt(r->seconds) << " s)\n";
@@ -247,7 +252,9 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
       h << "<div class=\"claim\" id=\"" << anchor(id) << "\">\n<h3>" << html_escape(id) << " <span class=\"v " << cls << "\">"
         << html_escape(e.verdict) << "</span></h3>\n<dl>\n";
       if (e.row)
-        h << "<dt>Claim</dt><dd>" << inline_html(e.row->claim) << "</dd>\n<dt>Where</dt><dd>" << inline_html(e.row->where) << "</dd>\n";
+        h << "<dt>Claim</dt><dd>" << inline_html(e.row->claim) << "</dd>\n<dt>Where</dt><dd>" << inline_html(e.row->where)
+          << "</dd>\n<dt>How it is checked</dt><dd>" << inline_html(e.row->check) << "</dd>\n<dt>Tests</dt><dd>"
+          << inline_html(e.row->tests) << "</dd>\n";
       for (const Result* r : e.results) {
         h << "<dt>Verdict (" << html_escape(r->claim) << ")</dt><dd><span class=\"v " << (r->verdict.pass ? "PASS" : "FAIL") << "\">"
           << (r->verdict.pass ? "PASS" : "FAIL") << "</span> " << html_escape(r->title)

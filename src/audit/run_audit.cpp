@@ -7,6 +7,10 @@
 #include <set>
 #include <sstream>
 
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+#include <limits>
+
 #include "audit/audit.hpp"
 #include "exact/error.hpp"
 
@@ -79,7 +83,8 @@ std::vector<Result> run_checks(const Options& options) {
   for (std::size_t i = 0; i < chosen.size(); ++i) {
     const Check& check = chosen[i];
     if (options.progress) options.progress(i, chosen.size(), check.claim);
-    Result r{check.claim, check.title, {}, 0};
+    Result r;
+    r.claim = check.claim, r.title = check.title;
     auto start = std::chrono::steady_clock::now();
     try {
       r.verdict = check.run(options);
@@ -115,7 +120,7 @@ void write_json(const std::vector<Result>& results, std::ostream& json) {
     json << (k ? "," : "") << "\n {\"claim\":" << json_string(r.claim) << ",\"title\":" << json_string(r.title)
          << ",\"pass\":" << (v.pass ? "true" : "false") << ",\"summary\":" << json_string(v.summary)
          << ",\"seconds\":" << json_number(r.seconds) << ",\"kmr_version\":" << json_string(version())
-         << ",\"thesis\":" << json_string(v.thesis) << ",\"figures\":{";
+         << ",\"thesis\":" << json_string(v.thesis) << ",\"replay\":" << json_string(r.replay) << ",\"figures\":{";
     for (std::size_t i = 0; i < v.figures.size(); ++i)
       json << (i ? "," : "") << json_string(v.figures[i].first) << ":" << json_string(v.figures[i].second);
     json << "},\"plots\":[";
@@ -134,6 +139,73 @@ void write_json(const std::vector<Result>& results, std::ostream& json) {
     json << "]}";
   }
   json << "\n]\n";
+}
+
+namespace {
+double read_number(const std::string& s) {
+  if (s == "null") return std::numeric_limits<double>::quiet_NaN();
+  std::size_t used = 0;
+  double x = std::stod(s, &used);
+  if (used != s.size()) throw std::invalid_argument("not a number: '" + s + "'");
+  return x;
+}
+svg::Axis read_axis(const boost::property_tree::ptree& a) {
+  svg::Axis r = svg::linear_axis(a.get<std::string>("label"), a.get<std::string>("unit"));
+  r.log = a.get<bool>("log");
+  for (const auto& [k, c] : a.get_child("categories")) r.categories.push_back(c.data());
+  return r;
+}
+std::vector<svg::Series> read_series(const boost::property_tree::ptree& list) {
+  std::vector<svg::Series> out;
+  for (const auto& [k, s] : list) {
+    svg::Series series{s.get<std::string>("name"), {}};
+    for (const auto& [k2, p] : s.get_child("points")) {
+      if (p.size() != 2) throw std::invalid_argument("a point needs 2 numbers");
+      auto it = p.begin();
+      double x = read_number(it->second.data());
+      double y = read_number((++it)->second.data());
+      series.points.push_back({x, y});
+    }
+    out.push_back(std::move(series));
+  }
+  return out;
+}
+}  // namespace
+
+std::vector<Result> read_json(const std::string& path) {
+  static const boost::property_tree::ptree kNoPlots;  // results written before plots existed
+  namespace pt = boost::property_tree;
+  std::vector<Result> results;
+  try {
+    pt::ptree root;
+    pt::read_json(path, root);
+    for (const auto& [key, c] : root) {
+      Result r;
+      r.claim = c.get<std::string>("claim");
+      r.title = c.get<std::string>("title");
+      r.verdict.pass = c.get<bool>("pass");
+      r.verdict.summary = c.get<std::string>("summary");
+      r.verdict.thesis = c.get<std::string>("thesis", "");
+      r.replay = c.get<std::string>("replay", "");
+      r.seconds = read_number(c.get<std::string>("seconds"));
+      for (const auto& [name, value] : c.get_child("figures")) r.verdict.figure(name, value.data());
+      for (const auto& [k, p] : c.get_child("plots", kNoPlots)) {
+        svg::Plot plot;
+        plot.title = p.get<std::string>("title");
+        plot.x = read_axis(p.get_child("x"));
+        plot.y = read_axis(p.get_child("y"));
+        plot.series = read_series(p.get_child("series"));
+        plot.bounds = read_series(p.get_child("bounds"));
+        r.verdict.plot(std::move(plot));
+      }
+      if (r.claim.empty()) throw std::invalid_argument("a result without a claim ID");
+      results.push_back(std::move(r));
+    }
+  } catch (const std::exception& e) {
+    throw InputError("cannot read audit results from '" + path + "': " + e.what());
+  }
+  if (results.empty()) throw InputError("no audit results in '" + path + "'");
+  return results;
 }
 
 int status(const std::vector<Result>& results) {

@@ -12,9 +12,9 @@
 namespace kmr::cli {
 
 int audit_command(const Argv& argv) {
-  Args args(argv, {"json", "only", "seed", "report"}, {"quick", "quiet"});
+  Args args(argv, {"json", "only", "seed", "report", "include"}, {"quick", "quiet"});
   if (args.help()) {
-    std::cout << "usage: kmr audit [--quick] [--only CLAIM-PREFIX] [--seed N] [--json FILE] [--report DIR] [--quiet]\n"
+    std::cout << "usage: kmr audit [--quick] [--only CLAIM-PREFIX] [--seed N] [--json FILE] [--report DIR] [--include FILE] [--quiet]\n"
                  "Runs every check of the claims ledger (spec/claims.md) on built-in seeded defaults and\n"
                  "prints a table: claim, verdict, measured figures. Exit status 1 if any claim fails.\n"
                  "  --quick   smaller inputs (what ctest runs)\n"
@@ -22,6 +22,8 @@ int audit_command(const Argv& argv) {
                  "  --json    also write the verdicts, figures and plot data as JSON to FILE\n"
                  "  --report  also write DIR/report.md, DIR/index.html (offline) and DIR/*.svg plots: one\n"
                  "            entry per ledger claim with verdict, figures and the command that replays it\n"
+                 "  --include also report the results in FILE (JSON in the --json format, e.g. written by\n"
+                 "            bench/roots/roots_bench --audit-json FILE: the root solver vs CGAL)\n"
                  "  --quiet   no progress on stderr (shown only when stderr is a terminal)\n";
     return 0;
   }
@@ -35,6 +37,8 @@ int audit_command(const Argv& argv) {
     json.open(*path);
     if (!json) throw InputError("cannot write --json file '" + *path + "'");
   }
+  std::vector<audit::Result> included;
+  if (auto path = args.value("include")) included = audit::read_json(*path);  // before the run: fail fast
   std::vector<audit::LedgerSection> ledger;
   if (args.value("report")) ledger = audit::parse_ledger(audit::claims_ledger());
   Progress progress(args.has("quiet"));
@@ -44,6 +48,7 @@ int audit_command(const Argv& argv) {
       else progress.done();
     };
   auto results = audit::run_checks(options);
+  results.insert(results.end(), included.begin(), included.end());
   audit::print_table(results, std::cout);
   if (json.is_open()) audit::write_json(results, json);
   if (auto dir = args.value("report")) {

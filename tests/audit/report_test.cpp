@@ -9,11 +9,13 @@
 #include <boost/property_tree/xml_parser.hpp>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "audit/audit.hpp"
 #include "audit/ledger.hpp"
 #include "audit/report.hpp"
+#include "exact/error.hpp"
 
 #ifndef KMR_CLAIMS_MD
 #error "KMR_CLAIMS_MD (path of spec/claims.md) is defined by tests/audit/CMakeLists.txt"
@@ -145,6 +147,49 @@ TEST(Report, PlotMarkersEqualTheJsonPointsAndEveryLedgerIdIsListed) {
   }
   EXPECT_EQ(svg_index, files.svgs.size());
   EXPECT_GE(points, 3u + 7u);
+  std::filesystem::remove_all(dir);
+}
+
+// --include: results read back from JSON write the same JSON (plots included), and a result of a
+// claim the audit has no check for (the CGAL benchmark's I2-root-solver-speed) is reported on its row.
+TEST(Report, IncludedResultsRoundTripAndLandOnTheirLedgerRow) {
+  Result r;
+  r.claim = "I2-root-solver-speed";
+  r.title = "bench \"quoted\"";
+  r.seconds = 0.25;
+  r.verdict.pass = true;
+  r.verdict.summary = "s";
+  r.verdict.thesis = "t";
+  r.verdict.figure("ratio", "0.4");
+  kmr::svg::Plot p;
+  p.title = "q";
+  p.x = kmr::svg::category_axis("program", {"a", "b"});
+  p.y = kmr::svg::log_axis("us", "µs");
+  p.series = {{"kmr", {{0, 1.0 / 3}, {1, 7e-9}}}};
+  p.bounds = {{"half", {{0, 0.5}, {1, std::numeric_limits<double>::quiet_NaN()}}}};
+  r.verdict.plot(p);
+  auto dir = std::filesystem::temp_directory_path() / "kmr_include_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ostringstream a;
+  write_json({r}, a);
+  std::ofstream(dir / "in.json") << a.str();
+  auto back = read_json((dir / "in.json").string());
+  std::ostringstream b;
+  write_json(back, b);
+  EXPECT_EQ(a.str(), b.str());
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_EQ(back[0].verdict.plots.at(0).series.at(0).points.at(0).y, 1.0 / 3);
+  Options o;
+  write_report((dir / "r").string(), back, o, parse_ledger(claims_ledger()));
+  std::string md = slurp(dir / "r" / "report.md");
+  auto at = md.find("\n### I2-root-solver-speed — PASS");
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_NE(md.find("plot-I2-root-solver-speed-1.svg", at), std::string::npos);
+  EXPECT_EQ(md.find("Checks not in the ledger"), std::string::npos);
+  std::ofstream(dir / "bad.json") << "[{\"claim\": \"x\"}]";
+  EXPECT_THROW(read_json((dir / "bad.json").string()), kmr::InputError);
+  EXPECT_THROW(read_json((dir / "missing.json").string()), kmr::InputError);
   std::filesystem::remove_all(dir);
 }
 
