@@ -42,17 +42,19 @@ std::vector<LedgerSection> parse_ledger(std::string_view md) {
     pos = end + 1;
     ++n;
     if (line.rfind("## ", 0) == 0) {
-      sections.push_back({trim(line.substr(3)), {}});
+      sections.push_back({trim(line.substr(3)), "", {}});
       continue;
     }
     std::string t = trim(line);
+    if (!t.empty() && t[0] != '|' && t.rfind("<!--", 0) != 0 && !sections.empty() && sections.back().rows.empty())
+      sections.back().note += (sections.back().note.empty() ? "" : " ") + t;
     if (t.empty() || t[0] != '|') continue;
     auto c = cells(t);
     if (c.empty() || c[0] == "ID" || c[0].rfind("---", 0) == 0) continue;
     if (c.size() < 6)
       throw std::runtime_error("claims ledger line " + std::to_string(n) + ": a table row needs 6 cells, has " +
                                std::to_string(c.size()));
-    if (sections.empty()) sections.push_back({"", {}});
+    if (sections.empty()) sections.push_back({"", "", {}});
     sections.back().rows.push_back({c[0], c[1], c[2], c[3], c[4], c[5], n});
   }
   std::vector<LedgerSection> nonempty;

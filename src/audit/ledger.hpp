@@ -4,7 +4,8 @@
 // (claims_ledger(); src/audit/CMakeLists.txt), so the report never depends on the working directory.
 // Guarantees (tests/audit/ledger_test): every table row whose first cell is not the header or the
 // |---| rule becomes one LedgerRow, in file order, under the last `## ` heading above it; an escaped
-// pipe `\|` stays inside its cell (as `|`); cells are trimmed; a row with fewer than 6 cells throws
+// pipe `\|` stays inside its cell (as `|`); cells are trimmed; prose lines before a section's
+// first table (not HTML comments) form its note; a row with fewer than 6 cells throws
 // std::runtime_error naming its line.
 #include <string>
 #include <string_view>
@@ -19,6 +20,7 @@ struct LedgerRow {
 
 struct LedgerSection {
   std::string title;  // the `## ` heading without the hashes
+  std::string note;   // prose between the heading and the first table (e.g. why its claims are todo)
   std::vector<LedgerRow> rows;
 };
 

@@ -78,7 +78,7 @@ struct Entry {
 std::string todo_reason(const std::string& status) {
   std::string r = status.substr(4);  // after "todo"
   while (!r.empty() && (r[0] == ':' || r[0] == ' ')) r.erase(0, 1);
-  return r.empty() ? "not implemented yet" : r;
+  return r.empty() ? "not implemented yet (see the chapter's note)" : r;
 }
 
 void write_file(const std::filesystem::path& p, const std::string& text) {
@@ -172,8 +172,10 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
     return e;
   };
   std::vector<std::pair<std::string, std::vector<Entry>>> chapters;
+  std::vector<std::string> notes;
   for (const auto& s : ledger) {
     chapters.push_back({s.title, {}});
+    notes.push_back(s.note);
     for (const auto& row : s.rows) {
       std::vector<const Result*> rs;
       for (const Result& r : results)
@@ -186,6 +188,7 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
     if (!owner[&r]) orphans.push_back(&r);
   if (!orphans.empty()) {
     chapters.push_back({"Checks not in the ledger", {}});
+    notes.push_back("Results whose claim ID matches no row of spec/claims.md.");
     for (const Result* r : orphans) chapters.back().second.push_back(build(nullptr, {r}));
   }
 
@@ -208,8 +211,10 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
   md << "# kmr claims report\n\n"
      << "kmr " << version() << " · `kmr audit` (" << mode << ") · ledger: `spec/claims.md` as built into this binary\n\n"
      << tally << ".\n\n" << legend << "\n";
-  for (const auto& [title, es] : chapters) {
+  for (std::size_t c = 0; c < chapters.size(); ++c) {
+    const auto& [title, es] = chapters[c];
     md << "\n## " << title << "\n";
+    if (!notes[c].empty()) md << "\n" << notes[c] << "\n";
     for (const Entry& e : es) {
       std::string id = e.row ? e.row->id : e.results.front()->claim;
       md << "\n### " << id << " — " << e.verdict << "\n\n";
@@ -245,6 +250,7 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
   h << "</ul>\n";
   for (std::size_t c = 0; c < chapters.size(); ++c) {
     h << "<h2 id=\"chapter-" << c << "\">" << inline_html(chapters[c].first) << "</h2>\n";
+    if (!notes[c].empty()) h << "<p>" << inline_html(notes[c]) << "</p>\n";
     for (const Entry& e : chapters[c].second) {
       std::string id = e.row ? e.row->id : e.results.front()->claim;
       std::string cls = e.verdict;

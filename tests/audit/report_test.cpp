@@ -37,11 +37,13 @@ TEST(Ledger, ParsesSectionsRowsAndEscapedPipes) {
   const char* md =
       "# Claims ledger\n\nintro | not a table\n\n## Chapter A (§1)\n\n| ID | claim | where | check | tests | status |\n"
       "|---|---|---|---|---|---|\n| X1 | size \\|s\\| grows | §1.2 | brute force | `Suite.X1_Test` | checked |\n"
-      "| X2 | two | §1.3 | — | — | todo: not built |\n\n## Empty section\n\ntext\n\n## Chapter B\n"
+      "| X2 | two | §1.3 | — | — | todo: not built |\n\n## Empty section\n\ntext\n\n## Chapter B\nNot built yet;\n<!-- owner -->\nsee below.\n"
       "| ID | claim | where | check | tests | status |\n|---|---|---|---|---|---|\n| Y1 | y | §2 | c | t | measured: 3x |\n";
   auto s = parse_ledger(md);
   ASSERT_EQ(s.size(), 2u);  // the section without rows is dropped
   EXPECT_EQ(s[0].title, "Chapter A (§1)");
+  EXPECT_EQ(s[0].note, "");
+  EXPECT_EQ(s[1].note, "Not built yet; see below.");
   ASSERT_EQ(s[0].rows.size(), 2u);
   EXPECT_EQ(s[0].rows[0].claim, "size |s| grows");
   EXPECT_EQ(s[0].rows[0].tests, "`Suite.X1_Test`");
