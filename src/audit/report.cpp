@@ -95,7 +95,7 @@ h1{font-size:1.6em}h2{border-bottom:2px solid #ccc;margin-top:2em}h3{margin-bott
 .TESTS{background:#dde8f7;color:#1b3d6d}.MEASURED{background:#e6def5;color:#45226b}.NOTRUN{background:#f5ecd0;color:#6b5000}.NOTCHECKABLE{background:#eee;color:#555}
 table{border-collapse:collapse;margin:.4em 0}td,th{border:1px solid #ddd;padding:.15em .5em;text-align:left;vertical-align:top}
 code{background:#f4f4f4;padding:0 .2em}dt{font-weight:bold;margin-top:.3em}dd{margin-left:1.5em}
-img{max-width:100%;border:1px solid #eee;margin:.3em 0}
+img{max-width:100%;border:1px solid #eee;margin:.3em 0}li a.v{display:inline-block;margin:.1em 0;text-decoration:none;font-weight:normal}
 )";
 
 }  // namespace
@@ -245,8 +245,16 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
     << kCss << "</style>\n</head>\n<body>\n<h1>kmr claims report</h1>\n<p>kmr " << html_escape(version()) << " &middot; <code>kmr audit</code> ("
     << html_escape(mode) << ") &middot; ledger: <code>spec/claims.md</code> as built into this binary</p>\n<p>"
     << html_escape(tally) << ".</p>\n<p>" << inline_html(legend) << "</p>\n<ul>\n";
-  for (std::size_t c = 0; c < chapters.size(); ++c)
-    h << "<li><a href=\"#chapter-" << c << "\">" << inline_html(chapters[c].first) << "</a></li>\n";
+  for (std::size_t c = 0; c < chapters.size(); ++c) {
+    h << "<li><a href=\"#chapter-" << c << "\">" << inline_html(chapters[c].first) << "</a><br>";
+    for (const Entry& e : chapters[c].second) {  // an overview: every claim with its verdict
+      std::string id = e.row ? e.row->id : e.results.front()->claim, cls = e.verdict;
+      cls.erase(std::remove(cls.begin(), cls.end(), ' '), cls.end());
+      h << "<a class=\"v " << cls << "\" href=\"#" << anchor(id) << "\" title=\"" << html_escape(e.verdict) << "\">"
+        << html_escape(id) << "</a> ";
+    }
+    h << "</li>\n";
+  }
   h << "</ul>\n";
   for (std::size_t c = 0; c < chapters.size(); ++c) {
     h << "<h2 id=\"chapter-" << c << "\">" << inline_html(chapters[c].first) << "</h2>\n";

@@ -92,6 +92,7 @@ Scale make_scale(std::vector<double> v, const Axis& a, bool is_x) {
   }
   if (!is_x && lo > 0 && lo < 0.6 * hi) lo = 0;  // a y axis from 0 when the data are not far from it
   if (hi == lo) lo -= std::max(1.0, std::fabs(lo) * 0.1), hi += std::max(1.0, std::fabs(hi) * 0.1);
+  if (is_x) lo -= 0.02 * (hi - lo), hi += 0.02 * (hi - lo);  // markers off the axes
   double step = nice_step(hi - lo, 5);
   s.lo = std::floor(lo / step) * step, s.hi = std::ceil(hi / step) * step;
   for (double t = s.lo; t <= s.hi + step * 1e-9; t += step) s.ticks.push_back(std::fabs(t) < step * 1e-9 ? 0 : t);
@@ -175,11 +176,13 @@ std::string render(const Plot& plot, double width, double height) {
     d.end_group();
     legend(s.name, style(c, "none", 1.5), true);
   }
+  const char* const dashes[] = {"6 4", "2 3", "10 3 2 3", "12 6"};
+  std::size_t bound_no = 0;
   for (const Series& s : plot.bounds) {
     std::vector<std::pair<double, double>> line;
     for (const XY& p : s.points)
       if (drawable(p, plot)) line.emplace_back(X(p.x), Y(p.y));
-    Style st = style("#555", "none", 1.5, "6 4");
+    Style st = style("#555", "none", 1.5, dashes[bound_no++ % 4]);
     if (line.size() > 1) d.polyline(line, st, {{"class", "bound"}, {"data-series", s.name}});
     legend(s.name, st, false);
   }
