@@ -71,7 +71,8 @@ struct Entry {
   std::vector<const Result*> results;     // the checks of this row that ran
   std::vector<std::string> plot_files;    // per plot of those results, in order
   std::vector<std::string> plot_titles;
-  std::string verdict;                    // PASS, FAIL, NOT RUN, TESTS, TODO, NOT CHECKABLE
+  bool via = false;                       // results are of the audit check(s) the row's "tests" cell names
+  std::string verdict;                    // PASS, FAIL, NOT RUN, TESTS, MEASURED, TODO, NOT CHECKABLE
   std::vector<std::string> replay;
 };
 
@@ -97,6 +98,18 @@ table{border-collapse:collapse;margin:.4em 0}td,th{border:1px solid #ddd;padding
 code{background:#f4f4f4;padding:0 .2em}dt{font-weight:bold;margin-top:.3em}dd{margin-left:1.5em}
 img{max-width:100%;border:1px solid #eee;margin:.3em 0}li a.v{display:inline-block;margin:.1em 0;text-decoration:none;font-weight:normal}
 )";
+
+// Does a ledger cell name audit check `claim` ("audit T3.4.3", "audit `A2.1-batch`", "audit T3.3.8, ...")?
+bool names_audit_check(const std::string& cell, const std::string& claim) {
+  for (const std::string& form : {"audit " + claim, "audit `" + claim + "`"}) {
+    for (std::size_t at = cell.find(form); at != std::string::npos; at = cell.find(form, at + 1)) {
+      std::size_t end = at + form.size();
+      if (end == cell.size() || !(std::isalnum(static_cast<unsigned char>(cell[end])) || cell[end] == '.' || cell[end] == '-'))
+        return true;
+    }
+  }
+  return false;
+}
 
 }  // namespace
 
@@ -136,16 +149,22 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
     owner[&r] = best;
   }
   ReportFiles files;
-  auto build = [&](const LedgerRow* row, std::vector<const Result*> rs) {
+  std::map<const Result*, std::vector<std::string>> plot_files;  // every plot drawn once, in result order
+  for (const Result& r : results)
+    for (std::size_t i = 0; i < r.verdict.plots.size(); ++i) {
+      std::string f = "plot-" + file_stem(r.claim) + "-" + std::to_string(i + 1) + ".svg";
+      write_file(fs::path(dir) / f, svg::render(r.verdict.plots[i]));
+      files.svgs.push_back(f);
+      plot_files[&r].push_back(f);
+    }
+  auto build = [&](const LedgerRow* row, std::vector<const Result*> rs, bool via) {
     Entry e;
     e.row = row;
+    e.via = via;
     e.results = std::move(rs);
     for (const Result* r : e.results)
       for (std::size_t i = 0; i < r->verdict.plots.size(); ++i) {
-        std::string f = "plot-" + file_stem(r->claim) + "-" + std::to_string(i + 1) + ".svg";
-        write_file(fs::path(dir) / f, svg::render(r->verdict.plots[i]));
-        files.svgs.push_back(f);
-        e.plot_files.push_back(f);
+        e.plot_files.push_back(plot_files[r][i]);
         e.plot_titles.push_back(r->verdict.plots[i].title);
       }
     std::string status = row ? row->status : "";
@@ -180,7 +199,11 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
       std::vector<const Result*> rs;
       for (const Result& r : results)
         if (owner[&r] == &row) rs.push_back(&r);
-      chapters.back().second.push_back(build(&row, rs));
+      bool via = false;
+      if (rs.empty())  // a row measured by another claim's check, e.g. L3.3.16 by "audit T3.4.3"
+        for (const Result& r : results)
+          if (names_audit_check(row.tests, r.claim) || names_audit_check(row.check, r.claim)) rs.push_back(&r), via = true;
+      chapters.back().second.push_back(build(&row, rs, via));
     }
   }
   std::vector<const Result*> orphans;
@@ -189,7 +212,7 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
   if (!orphans.empty()) {
     chapters.push_back({"Checks not in the ledger", {}});
     notes.push_back("Results whose claim ID matches no row of spec/claims.md.");
-    for (const Result* r : orphans) chapters.back().second.push_back(build(nullptr, {r}));
+    for (const Result* r : orphans) chapters.back().second.push_back(build(nullptr, {r}, false));
   }
 
   std::map<std::string, int> counts;
@@ -222,7 +245,7 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
         md << "- **Claim.** " << e.row->claim << "\n- **Where.** " << e.row->where << "\n- **How it is checked.** " << e.row->check
            << "\n- **Tests.** " << e.row->tests << "\n";
       for (const Result* r : e.results) {
-        md << "- **Verdict (" << r->claim << ").** " << (r->verdict.pass ? "PASS" : "FAIL") << " — " << r->title
+        md << "- **Verdict (" << (e.via ? "via audit check " : "") << r->claim << ").** " << (r->verdict.pass ? "PASS" : "FAIL") << " — " << r->title
            << (r->verdict.summary.empty() ? "" : ": " + r->verdict.summary) << " (" << fmt(r->seconds) << " s)\n";
         if (!r->verdict.thesis.empty()) md << "- **Thesis's figure.** " << r->verdict.thesis << "\n";
       }
@@ -270,7 +293,7 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
           << "</dd>\n<dt>How it is checked</dt><dd>" << inline_html(e.row->check) << "</dd>\n<dt>Tests</dt><dd>"
           << inline_html(e.row->tests) << "</dd>\n";
       for (const Result* r : e.results) {
-        h << "<dt>Verdict (" << html_escape(r->claim) << ")</dt><dd><span class=\"v " << (r->verdict.pass ? "PASS" : "FAIL") << "\">"
+        h << "<dt>Verdict (" << (e.via ? "via audit check " : "") << html_escape(r->claim) << ")</dt><dd><span class=\"v " << (r->verdict.pass ? "PASS" : "FAIL") << "\">"
           << (r->verdict.pass ? "PASS" : "FAIL") << "</span> " << html_escape(r->title)
           << (r->verdict.summary.empty() ? "" : ": " + html_escape(r->verdict.summary)) << " (" << fmt(r->seconds) << " s)</dd>\n";
         if (!r->verdict.thesis.empty()) h << "<dt>Thesis's figure</dt><dd>" << inline_html(r->verdict.thesis) << "</dd>\n";

@@ -183,12 +183,21 @@ TEST(Report, IncludedResultsRoundTripAndLandOnTheirLedgerRow) {
   ASSERT_EQ(back.size(), 1u);
   EXPECT_EQ(back[0].verdict.plots.at(0).series.at(0).points.at(0).y, 1.0 / 3);
   Options o;
+  Result t338;  // L3.3.9's row names "audit T3.3.8": it shows that check's verdict
+  t338.claim = "T3.3.8";
+  t338.title = "squares";
+  back.push_back(t338);
   write_report((dir / "r").string(), back, o, parse_ledger(claims_ledger()));
   std::string md = slurp(dir / "r" / "report.md");
   auto at = md.find("\n### I2-root-solver-speed — PASS");
   ASSERT_NE(at, std::string::npos);
   EXPECT_NE(md.find("plot-I2-root-solver-speed-1.svg", at), std::string::npos);
   EXPECT_EQ(md.find("Checks not in the ledger"), std::string::npos);
+  auto l339 = md.find("\n### L3.3.9 — FAIL");
+  ASSERT_NE(l339, std::string::npos);
+  EXPECT_EQ(md.find("**Verdict (via audit check T3.3.8).** FAIL", l339), md.find("**Verdict", l339));
+  EXPECT_NE(md.find("\n### L3.3.10 — "), std::string::npos);
+  EXPECT_EQ(md.find("\n### L3.3.10 — FAIL"), std::string::npos);  // "audit T3.3.8" is not L3.3.10's
   std::ofstream(dir / "bad.json") << "[{\"claim\": \"x\"}]";
   EXPECT_THROW(read_json((dir / "bad.json").string()), kmr::InputError);
   EXPECT_THROW(read_json((dir / "missing.json").string()), kmr::InputError);
