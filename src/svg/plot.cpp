@@ -85,7 +85,7 @@ Scale make_scale(std::vector<double> v, const Axis& a, bool is_x) {
   double lo = v.empty() ? 0 : *std::min_element(v.begin(), v.end());
   double hi = v.empty() ? 1 : *std::max_element(v.begin(), v.end());
   if (s.log) {
-    s.lo = std::floor(lo), s.hi = std::ceil(hi);
+    s.lo = std::floor(lo - 0.05), s.hi = std::ceil(hi + 0.05);  // nothing drawn on the frame
     if (s.hi == s.lo) s.hi += 1;
     for (double t = s.lo; t <= s.hi + 1e-9; t += 1) s.ticks.push_back(t);
     return s;
