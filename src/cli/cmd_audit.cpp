@@ -1,3 +1,4 @@
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 
@@ -40,7 +41,12 @@ int audit_command(const Argv& argv) {
   std::vector<audit::Result> included;
   if (auto path = args.value("include")) included = audit::read_json(*path);  // before the run: fail fast
   std::vector<audit::LedgerSection> ledger;
-  if (args.value("report")) ledger = audit::parse_ledger(audit::claims_ledger());
+  if (auto dir = args.value("report")) {  // fail before the run, not after it
+    std::error_code ec;
+    std::filesystem::create_directories(*dir, ec);
+    if (ec || !std::filesystem::is_directory(*dir)) throw InputError("cannot create report directory '" + *dir + "'");
+    ledger = audit::parse_ledger(audit::claims_ledger());
+  }
   Progress progress(args.has("quiet"));
   if (progress.enabled())
     options.progress = [&](std::size_t i, std::size_t n, const std::string& claim) {

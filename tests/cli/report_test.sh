@@ -50,9 +50,13 @@ done <"$tmp/ids"
 ctest --test-dir "$build" -N >"$tmp/tests" 2>/dev/null
 sed -n "s/.*ctest --test-dir build -R '\([^']*\)'.*/\1/p" "$tmp/r/report.md" | sort -u >"$tmp/regexes"
 [ -s "$tmp/regexes" ] && ok || bad "no ctest replay command in report.md"
-while read -r re; do
-  grep -Eq "Test +#[0-9]+: .*($re)" "$tmp/tests" && ok || bad "replay regex '$re' matches no ctest test"
-done <"$tmp/regexes"
+if [ "${KMR_ALL_TESTS_BUILT:-1}" = 1 ]; then
+  while read -r re; do
+    grep -Eq "Test +#[0-9]+: .*($re)" "$tmp/tests" && ok || bad "replay regex '$re' matches no ctest test"
+  done <"$tmp/regexes"
+else
+  echo "note: oracles or benchmarks not built (KMR_ORACLES/KMR_BENCH off): replay regexes not matched against ctest"
+fi
 # --only without a match
 "$kmr" audit --only NOSUCH >"$tmp/out" 2>"$tmp/err"
 rc=$?
