@@ -434,7 +434,7 @@ class Runtime {
   // Imperative modifiables (ΔML IBox): ialloc is keyed like alloc and sets the initial value.
   template <class T, class... K>
   IMod<T>* ialloc(const Label& label, T initial, const K&... keys) {
-    IMod<T>* m = alloc_impl<IMod<T>>(label, AllocMode::Keyed, nullptr, keys...);
+    IMod<T>* m = alloc_impl<IMod<T>>(label, nullptr, keys...);
     if (!(m->initial == initial)) {
       m->initial = std::move(initial);
       requeue(m->first.readers);
@@ -492,7 +492,7 @@ class Runtime {
 
   template <class T, class... K>
   Mod<T>* alloc(const Label& label, const K&... keys) {
-    return alloc_impl<Mod<T>>(label, AllocMode::Keyed, nullptr, keys...);
+    return alloc_impl<Mod<T>>(label, nullptr, keys...);
   }
   // A traceable value created by the computation (§1 item 1; a kinetic certificate): keyed like
   // alloc (the same key inside the re-executed interval returns the same traceable, with the value
@@ -502,7 +502,7 @@ class Runtime {
   template <class T, class... K>
   Mod<T>* traceable(const Label& label, T initial, const K&... keys) {
     bool reused = false;
-    Mod<T>* m = alloc_impl<Mod<T>>(label, AllocMode::Keyed, &reused, keys...);
+    Mod<T>* m = alloc_impl<Mod<T>>(label, &reused, keys...);
     if (reused && !m->external) fail(std::string("traceable ") + label.name + ": key reused by a plain allocation");
     if (!reused) {
       m->external = true;
@@ -538,9 +538,8 @@ class Runtime {
     write(m, std::move(value));
     return m;
   }
-  enum class AllocMode { Keyed, KeyedOrFresh };
   template <class M, class... K>
-  M* alloc_impl(const Label& label, AllocMode mode, bool* reused, const K&... keys) {
+  M* alloc_impl(const Label& label, bool* reused, const K&... keys) {
     inside("alloc");
     using A = AllocImpl<std::tuple<std::decay_t<K>...>>;
     static_assert(std::is_trivially_destructible_v<A>, "sac: allocation keys must be trivially destructible");
@@ -549,10 +548,8 @@ class Runtime {
     ModBase* anchor = nullptr;
     ((anchor = anchor ? anchor : anchor_one(keys)), ...);
     std::tuple<std::decay_t<K>...> key(keys...);
-    if (taken<M, A>(label, h, key, anchor)) {
-      if (mode == AllocMode::KeyedOrFresh) return fresh_impl<M>(label);
+    if (taken<M, A>(label, h, key, anchor))
       fail(std::string("allocation key ") + label.name + ":" + hex(h) + " used twice in one execution");
-    }
     M* m = nullptr;
     if (finger_) {
       if (A* a = find_alloc<M, A>(label, h, key, anchor)) {
@@ -613,14 +610,16 @@ class Runtime {
   }
   // Destination-passing memo (ΔML `mfun` returning a Box; CEAL's destination modrefs): a memoized
   // call whose result depends on reads. body(dest) writes the destination, possibly inside reads;
-  // the call returns dest, allocated under (label, key) and reused with the call. Re-executing a
-  // read inside body rewrites dest, so readers of dest see results that depend on reads. A second
-  // call with the same key in one execution gets a fresh destination (reuse is only ever inside
-  // the re-executed interval, Acar's rule).
+  // the call returns dest, a fresh allocation at the start of the call's interval, so it is reused
+  // exactly when the call is. Re-executing a read inside body rewrites dest, so readers of dest see
+  // results that depend on reads. (A keyed destination would add no reuse: a key found in the
+  // interval being re-executed comes with its memo call, which is then reused; and keying it would
+  // make two calls with one key in one execution collide, or make the choice between them depend
+  // on history, which the from-scratch comparison catches.)
   template <class T, class Key, class F>
   Mod<T>* memo_box(const Label& label, const Key& key, F&& body) {
-    return memo<Mod<T>*>(label, key, [this, &label, &key, &body] {
-      Mod<T>* dest = alloc_impl<Mod<T>>(label, AllocMode::KeyedOrFresh, nullptr, key);
+    return memo<Mod<T>*>(label, key, [this, &label, &body] {
+      Mod<T>* dest = fresh<T>(label);
       body(dest);
       return dest;
     });
