@@ -20,6 +20,13 @@ using kmr::sac::HookId;
 
 namespace {
 
+// rc::gen::inRange narrows its range at small sizes (positions near 0, first kinds only, small
+// values); edits and elements here are drawn from the whole range at every size.
+template <class T>
+rc::Gen<T> uniform(T lo, T hi) {
+  return rc::gen::resize(100, rc::gen::inRange<T>(lo, hi));
+}
+
 enum class Prog { CertifiedFilter, NextGreater, FirstPositive };
 
 struct Model {
@@ -111,9 +118,9 @@ Prog g_prog = Prog::CertifiedFilter;
 std::size_t g_max_n = 40;
 
 rc::Gen<long long> element() {
-  if (g_prog == Prog::NextGreater) return rc::gen::inRange<long long>(-6, 7);  // many equal keys
-  if (g_prog == Prog::FirstPositive) return rc::gen::inRange<long long>(-40, 2);  // positives are rare
-  return rc::gen::inRange<long long>(-20, 21);
+  if (g_prog == Prog::NextGreater) return uniform<long long>(-6, 7);  // many equal keys
+  if (g_prog == Prog::FirstPositive) return uniform<long long>(-10, 2);  // positives are rare
+  return uniform<long long>(-20, 21);
 }
 
 struct Edit {
@@ -124,8 +131,8 @@ struct Edit {
 
 Edit gen_edit(std::size_t size) {
   int kinds = g_prog == Prog::CertifiedFilter ? 4 : 3;
-  int kind = size == 0 ? 0 : *rc::gen::inRange(0, kinds);
-  std::size_t pos = *rc::gen::inRange<std::size_t>(0, kind == 0 ? size + 1 : size);
+  int kind = size == 0 ? 0 : *uniform(0, kinds);
+  std::size_t pos = *uniform<std::size_t>(0, kind == 0 ? size + 1 : size);
   return Edit{kind, pos, *element()};
 }
 
@@ -153,9 +160,22 @@ void apply_edit(const Edit& e, const Model& m, Sut& s) {
   else s.inst.owner->flip(input_cell_name(m.ids[e.pos]));  // the owner sets its certificate
 }
 
+
+// Shrinking drops commands, so a later edit's position may no longer exist: such sequences are
+// skipped (rc::state preconditions), never applied out of range.
+bool edit_fits(const Edit& e, std::size_t& size) {
+  if (e.kind == 0 ? e.pos > size : e.pos >= size) return false;
+  size += e.kind == 0 ? 1 : e.kind == 1 ? -1 : 0;
+  return true;
+}
+
 struct OneEdit : rc::state::Command<Model, Sut> {
   Edit e;
   explicit OneEdit(const Model& m) : e(gen_edit(m.values.size())) {}
+  void checkPreconditions(const Model& m) const override {
+    std::size_t size = m.values.size();
+    RC_PRE(edit_fits(e, size));
+  }
   void apply(Model& m) const override { apply_edit(e, m); }
   void run(const Model& m, Sut& s) const override {
     apply_edit(e, m, s);
@@ -171,11 +191,15 @@ struct Batch : rc::state::Command<Model, Sut> {
   std::vector<Edit> edits;
   explicit Batch(const Model& m) {
     std::size_t size = m.values.size();
-    int k = *rc::gen::inRange(2, 6);
+    int k = *uniform(2, 6);
     for (int i = 0; i < k; ++i) {
       edits.push_back(gen_edit(size));
       size += edits.back().kind == 0 ? 1 : edits.back().kind == 1 ? -1 : 0;
     }
+  }
+  void checkPreconditions(const Model& m) const override {
+    std::size_t size = m.values.size();
+    for (const Edit& e : edits) RC_PRE(edit_fits(e, size));
   }
   void apply(Model& m) const override {
     for (const Edit& e : edits) apply_edit(e, m);
@@ -196,19 +220,26 @@ void check(Prog p, std::size_t max_n, int min_commands) {
   g_prog = p;
   g_max_n = max_n;
   Model m;
-  std::size_t n = *rc::gen::inRange<std::size_t>(0, max_n + 1);
+  std::size_t n = *uniform<std::size_t>(0, max_n + 1);
   m.values = *rc::gen::container<std::vector<long long>>(n, element());
+  // first_positive starts without positives: the first one to arrive moves the output's write earlier.
+  if (p == Prog::FirstPositive)
+    for (long long& v : m.values) v = std::min(v, 0LL);
   for (std::size_t i = 0; i < n; ++i) m.ids.push_back(m.next_id++);
   Sut s{p, build(p, m), {}};
   verify(s, m);
   // A prefix of at least min_commands commands (long runs), then rc::state's own sequence.
-  int prefix = min_commands ? *rc::gen::inRange(min_commands, min_commands + 11) : 0;
+  int prefix = min_commands ? *uniform(min_commands, min_commands + 11) : 0;
   for (int k = 0; k < prefix; ++k) {
     auto cmd = *rc::state::gen::execOneOfWithArgs<OneEdit, OneEdit, Batch>()(m);
     cmd->run(m, s);
     cmd->apply(m);
   }
   rc::state::check(m, s, rc::state::gen::execOneOfWithArgs<OneEdit, OneEdit, Batch>());
+  auto st = s.inst.rt->stats();
+  RC_CLASSIFY(st.writes_moved_earlier > 0, "a write moved earlier");
+  RC_CLASSIFY(st.memo_hits > 0, "memo reused");
+  RC_CLASSIFY(st.fresh_allocs > 0, "fresh allocations");
 }
 
 // Runs a property with at most `cases` successful cases (the suite-wide RC_PARAMS seed still

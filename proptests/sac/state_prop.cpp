@@ -17,6 +17,13 @@ using namespace kmr::sacprograms;
 
 namespace {
 
+// rc::gen::inRange narrows its range at small sizes (positions near 0, first kinds only, small
+// values); edits and elements here are drawn from the whole range at every size.
+template <class T>
+rc::Gen<T> uniform(T lo, T hi) {
+  return rc::gen::resize(100, rc::gen::inRange<T>(lo, hi));
+}
+
 struct Model {
   std::vector<long long> values;
 };
@@ -28,9 +35,9 @@ struct Sut {
 // Elements: small integers (many duplicates) or, for quickhull, points on a small grid.
 rc::Gen<long long> element(bool points) {
   if (points)
-    return rc::gen::map(rc::gen::pair(rc::gen::inRange<long long>(-8, 9), rc::gen::inRange<long long>(-8, 9)),
+    return rc::gen::map(rc::gen::pair(uniform<long long>(-8, 9), uniform<long long>(-8, 9)),
                         [](std::pair<long long, long long> p) { return encode_point(p.first, p.second); });
-  return rc::gen::inRange<long long>(-20, 21);
+  return uniform<long long>(-20, 21);
 }
 
 void verify(const ListSession& s, const Model& m) {
@@ -52,8 +59,8 @@ struct Edit {
 };
 
 Edit gen_edit(std::size_t size, bool points) {
-  int kind = size == 0 ? 0 : *rc::gen::inRange(0, 3);
-  std::size_t pos = *rc::gen::inRange<std::size_t>(0, kind == 0 ? size + 1 : size);
+  int kind = size == 0 ? 0 : *uniform(0, 3);
+  std::size_t pos = *uniform<std::size_t>(0, kind == 0 ? size + 1 : size);
   return Edit{kind, pos, *element(points)};
 }
 
@@ -72,9 +79,22 @@ void apply_edit(const Edit& e, ListSession& s) {
 
 bool g_points = false;  // set per property before rc::state::check
 
+
+// Shrinking drops commands, so a later edit's position may no longer exist: such sequences are
+// skipped (rc::state preconditions), never applied out of range.
+bool edit_fits(const Edit& e, std::size_t& size) {
+  if (e.kind == 0 ? e.pos > size : e.pos >= size) return false;
+  size += e.kind == 0 ? 1 : e.kind == 1 ? -1 : 0;
+  return true;
+}
+
 struct OneEdit : rc::state::Command<Model, Sut> {
   Edit e;
   explicit OneEdit(const Model& m) : e(gen_edit(m.values.size(), g_points)) {}
+  void checkPreconditions(const Model& m) const override {
+    std::size_t size = m.values.size();
+    RC_PRE(edit_fits(e, size));
+  }
   void apply(Model& m) const override { apply_edit(e, m.values); }
   void run(const Model& m, Sut& sut) const override {
     Model next = m;
@@ -90,11 +110,15 @@ struct Batch : rc::state::Command<Model, Sut> {
   std::vector<Edit> edits;
   explicit Batch(const Model& m) {
     std::size_t size = m.values.size();
-    int k = *rc::gen::inRange(2, 6);
+    int k = *uniform(2, 6);
     for (int i = 0; i < k; ++i) {
       edits.push_back(gen_edit(size, g_points));
       size += edits.back().kind == 0 ? 1 : edits.back().kind == 1 ? -1 : 0;
     }
+  }
+  void checkPreconditions(const Model& m) const override {
+    std::size_t size = m.values.size();
+    for (const Edit& e : edits) RC_PRE(edit_fits(e, size));
   }
   void apply(Model& m) const override {
     for (const Edit& e : edits) apply_edit(e, m.values);
@@ -112,7 +136,7 @@ struct Batch : rc::state::Command<Model, Sut> {
 // Initial inputs: empty, all duplicates, sorted, reverse sorted, or random.
 std::vector<long long> initial(bool points) {
   int shape = *rc::gen::element(0, 1, 2, 3, 4);
-  std::size_t n = shape == 0 ? 0 : *rc::gen::inRange<std::size_t>(1, 40);
+  std::size_t n = shape == 0 ? 0 : *uniform<std::size_t>(1, 40);
   std::vector<long long> v = *rc::gen::container<std::vector<long long>>(n, element(points));
   if (shape == 1) std::fill(v.begin(), v.end(), v.empty() ? 0 : v[0]);
   if (shape == 2) std::sort(v.begin(), v.end());
@@ -160,10 +184,10 @@ struct TreeEdit : rc::state::Command<PlainTree, TreeSut> {
   explicit TreeEdit(const PlainTree& m) {
     auto leaves = m.leaves();
     auto merge = m.mergeable();
-    kind = merge.empty() ? *rc::gen::inRange(0, 2) : *rc::gen::inRange(0, 3);
+    kind = merge.empty() ? *uniform(0, 2) : *uniform(0, 3);
     node = kind == 2 ? *rc::gen::elementOf(merge) : *rc::gen::elementOf(leaves);
-    op = *rc::gen::inRange(0, 3);
-    value = *rc::gen::inRange<long long>(-50, 51);
+    op = *uniform(0, 3);
+    value = *uniform<long long>(-50, 51);
   }
   void apply(PlainTree& m) const override {
     if (kind == 0) m.set(node, value);
@@ -183,7 +207,7 @@ struct TreeEdit : rc::state::Command<PlainTree, TreeSut> {
 };
 
 RC_GTEST_PROP(SacStateProp, S1_3_ExptreePropagationEqualsFromScratch, ()) {
-  std::size_t leaves = *rc::gen::inRange<std::size_t>(1, 30);
+  std::size_t leaves = *uniform<std::size_t>(1, 30);
   PlainTree m = PlainTree::random(leaves, *rc::gen::arbitrary<std::uint64_t>());
   RC_CLASSIFY(leaves == 1, "single leaf");
   TreeSut s;
