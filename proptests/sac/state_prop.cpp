@@ -134,9 +134,9 @@ struct Batch : rc::state::Command<Model, Sut> {
 };
 
 // Initial inputs: empty, all duplicates, sorted, reverse sorted, or random.
-std::vector<long long> initial(bool points) {
+std::vector<long long> initial(bool points, std::size_t max_n) {
   int shape = *rc::gen::element(0, 1, 2, 3, 4);
-  std::size_t n = shape == 0 ? 0 : *uniform<std::size_t>(1, 40);
+  std::size_t n = shape == 0 ? 0 : *uniform<std::size_t>(1, max_n + 1);
   std::vector<long long> v = *rc::gen::container<std::vector<long long>>(n, element(points));
   if (shape == 1) std::fill(v.begin(), v.end(), v.empty() ? 0 : v[0]);
   if (shape == 2) std::sort(v.begin(), v.end());
@@ -146,12 +146,34 @@ std::vector<long long> initial(bool points) {
   return v;
 }
 
-void check_program(const std::string& name) {
+// max_n: largest initial input; min_commands: a prefix of at least that many commands runs before
+// rc::state's own sequence (long runs).
+void check_program(const std::string& name, std::size_t max_n = 39, int min_commands = 0) {
   g_points = name == "quickhull";
-  Model m{initial(g_points)};
+  Model m{initial(g_points, max_n)};
   Sut sut{std::make_unique<ListSession>(list_program(name), m.values)};
   verify(*sut.session, m);
+  int prefix = min_commands ? *uniform(min_commands, min_commands + 11) : 0;
+  for (int k = 0; k < prefix; ++k) {
+    auto cmd = *rc::state::gen::execOneOfWithArgs<OneEdit, OneEdit, Batch>()(m);
+    cmd->run(m, sut);
+    cmd->apply(m);
+  }
   rc::state::check(m, sut, rc::state::gen::execOneOfWithArgs<OneEdit, OneEdit, Batch>());
+}
+
+// Runs a property with at most `cases` successful cases (the suite-wide RC_PARAMS seed applies).
+template <class F>
+void check_cases(int cases, F f) {
+  auto params = rc::detail::configuration().testParams;
+  params.maxSuccess = std::min(params.maxSuccess, cases);
+  rc::detail::TestMetadata md;
+  md.id = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  md.description = md.id;
+  auto result = rc::detail::checkProperty(rc::detail::toProperty(f), md, params);
+  std::ostringstream ss;
+  rc::detail::printResultMessage(result, ss);
+  if (!result.template is<rc::detail::SuccessResult>()) FAIL() << ss.str();
 }
 
 RC_GTEST_PROP(SacStateProp, S1_3_MapPropagationEqualsFromScratch, ()) { check_program("map"); }
@@ -160,6 +182,14 @@ RC_GTEST_PROP(SacStateProp, S1_3_SumPropagationEqualsFromScratch, ()) { check_pr
 RC_GTEST_PROP(SacStateProp, S1_3_QuicksortPropagationEqualsFromScratch, ()) { check_program("quicksort"); }
 RC_GTEST_PROP(SacStateProp, S1_3_MergesortPropagationEqualsFromScratch, ()) { check_program("mergesort"); }
 RC_GTEST_PROP(SacStateProp, S1_3_QuickhullPropagationEqualsFromScratch, ()) { check_program("quickhull"); }
+
+// Long runs: ≥ 50 commands on inputs of up to 200 elements (fewer cases for the Θ(n log n) traces).
+TEST(SacStateProp, S1_3_MapLongRuns) { check_cases(15, [] { check_program("map", 200, 50); }); }
+TEST(SacStateProp, S1_3_FilterLongRuns) { check_cases(15, [] { check_program("filter", 200, 50); }); }
+TEST(SacStateProp, S1_3_SumLongRuns) { check_cases(10, [] { check_program("sum", 200, 50); }); }
+TEST(SacStateProp, S1_3_QuicksortLongRuns) { check_cases(5, [] { check_program("quicksort", 200, 50); }); }
+TEST(SacStateProp, S1_3_MergesortLongRuns) { check_cases(3, [] { check_program("mergesort", 200, 50); }); }
+TEST(SacStateProp, S1_3_QuickhullLongRuns) { check_cases(5, [] { check_program("quickhull", 200, 50); }); }
 
 // ---- expression trees: the model is the plain tree -------------------------------------------
 struct TreeSut {

@@ -387,42 +387,66 @@ void Runtime::release(ModBase* m) {
 }
 
 // ---- introspection ----------------------------------------------------------------------------
+namespace {
+void put_hex(std::string& out, std::uint64_t v) {  // 16 hex digits, no temporaries
+  static const char digits[] = "0123456789abcdef";
+  char buf[16];
+  for (int i = 15; i >= 0; --i, v >>= 4) buf[i] = digits[v & 15];
+  out.append(buf, 16);
+}
+}  // namespace
+
 std::string Runtime::signature() const {
   std::string out;
+  out.reserve(live_nodes_ * 24);
   for (const Stamp* s = om_.base()->next; s; s = s->next) {
     const Node* n = static_cast<const Node*>(s);
     switch (n->kind) {
       case Kind::ReadStart:
-        out += "R" + hex(static_cast<const ReadNode*>(n)->mod->name);
+        out += 'R';
+        put_hex(out, static_cast<const ReadNode*>(n)->mod->name);
         break;
       case Kind::End:
-        out += ")";
+        out += ')';
         break;
       case Kind::MemoStart: {
         auto* m = static_cast<const MemoNode*>(n);
-        out += "M";
+        out += 'M';
         out += m->label->name;
-        out += ":" + hex(m->hash) + "=" + hex(m->result_hash());
+        out += ':';
+        put_hex(out, m->hash);
+        out += '=';
+        put_hex(out, m->result_hash());
         break;
       }
       case Kind::Alloc: {
         auto* a = static_cast<const AllocNode*>(n);
-        out += (a->tag ? "A" : "F") + hex(a->hash);
-        if (a->mod && a->mod->external) out += "=" + hex(a->mod->value_hash());  // a traceable's value
+        out += a->tag ? 'A' : 'F';
+        put_hex(out, a->hash);
+        if (a->mod && a->mod->external) {  // a traceable's value
+          out += '=';
+          put_hex(out, a->mod->value_hash());
+        }
         break;
       }
       case Kind::Write: {
         const ModBase* m = static_cast<const WriteNode*>(n)->mod;
-        out += "W" + hex(m->name) + "=" + hex(m->value_hash());
+        out += 'W';
+        put_hex(out, m->name);
+        out += '=';
+        put_hex(out, m->value_hash());
         break;
       }
       case Kind::IWrite: {
         auto* w = static_cast<const IWriteNode*>(n);
-        out += "I" + hex(w->mod->name) + "=" + hex(w->value_hash());
+        out += 'I';
+        put_hex(out, w->mod->name);
+        out += '=';
+        put_hex(out, w->value_hash());
         break;
       }
       case Kind::Hook:
-        out += "H";
+        out += 'H';
         out += static_cast<const HookNode*>(n)->label->name;
         break;
     }
