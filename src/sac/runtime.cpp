@@ -45,6 +45,9 @@ Runtime::~Runtime() {
     if (n->kind == Kind::Alloc) {
       if (ModBase* m = static_cast<AllocNode*>(n)->mod) m->~ModBase();
     }
+    if (n->kind == Kind::MemoStart) {
+      if (ModBase* m = static_cast<MemoNode*>(n)->owned()) m->~ModBase();
+    }
     destroy_node(n);
     s = nx;
   }
@@ -299,9 +302,15 @@ void Runtime::kill(Node* n) {
       if (r->heap >= 0) heap_erase(r);
       break;
     }
-    case Kind::MemoStart:
-      unindex(static_cast<KeyedNode*>(n));
+    case Kind::MemoStart: {
+      auto* memo = static_cast<MemoNode*>(n);
+      unindex(memo);
+      if (ModBase* m = memo->owned()) {
+        m->dead = true;
+        dead_.push_back(m);
+      }
       break;
+    }
     case Kind::Alloc: {
       auto* a = static_cast<AllocNode*>(n);
       unindex(a);

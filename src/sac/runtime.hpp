@@ -200,6 +200,7 @@ struct MemoNode : KeyedNode {
   MemoNode() : KeyedNode(Kind::MemoStart) {}
   virtual ~MemoNode() = default;  // MemoImpl holds the key and result
   virtual std::uint64_t result_hash() const = 0;
+  virtual ModBase* owned() const = 0;  // a memo_box destination, freed with this node's trace
 };
 
 struct AllocNode : KeyedNode {
@@ -576,8 +577,13 @@ class Runtime {
   }
   template <class R, class Key, class F>
   R memo(const Label& label, const Key& key, F&& body) {
+    return memo_impl<MemoImpl<Key, R>, R>(label, key, [&body](MemoImpl<Key, R>*) { return body(); });
+  }
+  // memo with the node in hand: body(node) computes the result (memo_box allocates its
+  // destination into the node before running the user's body).
+  template <class M, class R, class Key, class F>
+  R memo_impl(const Label& label, const Key& key, F&& body) {
     inside("memo");
-    using M = MemoImpl<Key, R>;
     std::uint64_t h = mix(label.hash, canon_key(key));
     ModBase* anchor = anchor_of(key);
     if (finger_) {
@@ -597,7 +603,7 @@ class Runtime {
     m->label = &label;
     R result = [&] {
       FreshScope fs(*this, h);
-      return body();
+      return body(m);
     }();
     // A body whose last trace operation was a read or memo call ends where that interval ends: the
     // memo shares its end stamp (no node of the body can follow it, and whatever discards the
@@ -616,10 +622,16 @@ class Runtime {
   // interval being re-executed comes with its memo call, which is then reused; and keying it would
   // make two calls with one key in one execution collide, or make the choice between them depend
   // on history, which the from-scratch comparison catches.)
+  // The destination lives in the memo node (one node and one stamp for call and allocation, as
+  // CEAL fuses them): it is named by the call's key and freed with the call's trace.
   template <class T, class Key, class F>
   Mod<T>* memo_box(const Label& label, const Key& key, F&& body) {
-    return memo<Mod<T>*>(label, key, [this, &label, &body] {
-      Mod<T>* dest = fresh<T>(label);
+    using M = MemoImpl<Key, Mod<T>*, true>;
+    return memo_impl<M, Mod<T>*>(label, key, [this, &body](M* node) {
+      auto* dest = make_mod<Mod<T>>();
+      dest->name = mix(node->hash, 0xde57);
+      ++live_owned_;
+      node->result = dest;
       body(dest);
       return dest;
     });
@@ -654,12 +666,16 @@ class Runtime {
     explicit ReadImpl(G&& g) : k(std::forward<G>(g)) {}
     void rerun() override { k(static_cast<const T&>(static_cast<Mod<T>*>(mod)->value)); }
   };
-  template <class Key, class R>
-  struct MemoImpl : MemoNode {
+  template <class Key, class R, bool Owns = false>
+  struct MemoImpl : MemoNode {  // Owns: result is a destination this node allocated (memo_box)
     Key key;
     R result{};
     explicit MemoImpl(const Key& k) : key(k) {}
     std::uint64_t result_hash() const override { return sac::value_hash(result); }
+    ModBase* owned() const override {
+      if constexpr (Owns) return result;
+      else return nullptr;
+    }
   };
   template <class Keys>
   struct AllocImpl : AllocNode {  // the full key, compared on reuse (not only its hash)

@@ -119,13 +119,11 @@ struct Reduce {
   using Ctx = typename Op::Ctx;
   // One round: the blocks of l (a block ends before every cell whose coin is heads) → block sums.
   static List* half(Runtime* rt, List* l, Ctx ctx, std::uint64_t r) {
-    return rt->memo<List*>(Op::kHalf, std::make_tuple(l, ctx, r), [rt, l, ctx, r] {
-      List* dest = rt->alloc<Cell>(Op::kCell, l, ctx, r);
+    return rt->memo_box<Cell>(Op::kHalf, std::make_tuple(l, ctx, r), [rt, l, ctx, r](List* dest) {
       rt->read(l, [rt, ctx, r, dest](const Cell& c) {
         if (c.nil) rt->write(dest, Cell{});
         else absorb(rt, c.tail, c.head, ctx, r, dest);
       });
-      return dest;
     });
   }
   static Unit absorb(Runtime* rt, List* l, long long acc, Ctx ctx, std::uint64_t r, List* dest) {

@@ -38,19 +38,19 @@ long long farther(std::pair<long long, long long> ab, long long p, long long q) 
 using Ctx = std::pair<long long, long long>;
 struct MinOp {
   using Ctx = long long;
-  static constexpr Label kHalf{"qh.min.half"}, kAbsorb{"qh.min.absorb"}, kReduce{"qh.min.reduce"}, kCell{"qh.min.cell"};
+  static constexpr Label kHalf{"qh.min.half"}, kAbsorb{"qh.min.absorb"}, kReduce{"qh.min.reduce"};
   static long long combine(Ctx, long long a, long long b) { return lex_less(b, a) ? b : a; }
   static long long identity(Ctx) { return 0; }
 };
 struct MaxOp {
   using Ctx = long long;
-  static constexpr Label kHalf{"qh.max.half"}, kAbsorb{"qh.max.absorb"}, kReduce{"qh.max.reduce"}, kCell{"qh.max.cell"};
+  static constexpr Label kHalf{"qh.max.half"}, kAbsorb{"qh.max.absorb"}, kReduce{"qh.max.reduce"};
   static long long combine(Ctx, long long a, long long b) { return lex_less(a, b) ? b : a; }
   static long long identity(Ctx) { return 0; }
 };
 struct FarOp {
   using Ctx = std::pair<long long, long long>;
-  static constexpr Label kHalf{"qh.far.half"}, kAbsorb{"qh.far.absorb"}, kReduce{"qh.far.reduce"}, kCell{"qh.far.cell"};
+  static constexpr Label kHalf{"qh.far.half"}, kAbsorb{"qh.far.absorb"}, kReduce{"qh.far.reduce"};
   static long long combine(Ctx ab, long long p, long long q) { return farther(ab, p, q); }
   static long long identity(Ctx) { return 0; }
 };
