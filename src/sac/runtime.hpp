@@ -5,8 +5,10 @@
 // iwrite); `Box.get $ m` → rt.read(m, k);
 // `put` / `PutMemoTable.mkPut` keyed allocation → rt.alloc<T>(label, keys...); `mfun` memoized
 // function → rt.memo<R>(label, key, body); `Box.Meta.new/change/deref` → rt.input / rt.change /
-// rt.deref; `Adaptive.Meta.propagate` → rt.propagate(). A traceable value whose changes come from
-// outside (a kinetic certificate's outcome) is an input modifiable: Traceable<T> (below).
+// rt.deref; `Adaptive.Meta.propagate` → rt.propagate(); `mfun` returning a Box → rt.memo_box;
+// unkeyed `Box.put` → rt.put / rt.fresh. A traceable value whose changes come from outside (a
+// kinetic certificate's outcome) is rt.traceable inside a run (keyed) or an input outside one
+// (Traceable<T> does either).
 //
 // Guarantees (tested in tests/sac and proptests/sac; see spec/sac.md):
 //  * Change propagation re-executes affected reads in increasing start time; after propagate() the
@@ -18,11 +20,22 @@
 //    exactly the reads whose visible value changed.
 //  * A memoized call is reused only if its interval lies inside the interval being re-executed and
 //    after the current time (Acar's rule); the initial run never reuses.
-//  * alloc under a key found in the interval being re-executed returns the same modifiable;
-//    allocation keys are unique within an execution (a repeated key throws ContractError: reusing
-//    one modifiable in two roles would corrupt the computation).
+//  * alloc (and traceable) under a key found in the interval being re-executed returns the same
+//    modifiable; keys are compared in full (label and key tuple), not by hash; allocation keys are
+//    unique within an execution (a repeated key throws ContractError: reusing one modifiable in two
+//    roles would corrupt the computation). fresh/put allocate anew each time, any number of times.
+//  * A traceable created in a run keeps the value its owner set when it is reused; only the owner
+//    changes it (rt.change outside runs).
+//  * memo_box(label, key, body): body writes the returned destination, possibly inside reads; the
+//    destination is reused exactly when the call is.
+//  * A write whose modifiable's current write lies after the interval being re-executed moves the
+//    write earlier (CEAL); the later write must be gone when propagate() returns (else ContractError).
+//  * The signature lists every node with names and digests of written values, memo results and
+//    traceables' values (value_hash; extend with an ADL canon_value).
 //  * Trace that is not reused is discarded; discarding runs its undo hooks (on_discard) in time
-//    order; modifiables allocated in discarded trace are freed at the end of propagate().
+//    order, after the replacement code that precedes them in the re-executed interval (so hooks
+//    carry a per-instance HookId); modifiables allocated in discarded trace are freed at the end of
+//    propagate().
 //  * Misuse throws kmr::ContractError with a message naming it: reading an unwritten modifiable,
 //    writing a modifiable twice in one execution, an allocation key used twice in one execution,
 //    writing an input inside a run, trace operations outside a run or inside an undo hook,
