@@ -236,8 +236,8 @@ struct TreeEdit : rc::state::Command<PlainTree, TreeSut> {
   void show(std::ostream& os) const override { os << "tree edit kind=" << kind << " node=" << node; }
 };
 
-RC_GTEST_PROP(SacStateProp, S1_3_ExptreePropagationEqualsFromScratch, ()) {
-  std::size_t leaves = *uniform<std::size_t>(1, 30);
+void check_exptree(std::size_t max_leaves, int min_commands) {
+  std::size_t leaves = *uniform<std::size_t>(1, max_leaves + 1);
   PlainTree m = PlainTree::random(leaves, *rc::gen::arbitrary<std::uint64_t>());
   RC_CLASSIFY(leaves == 1, "single leaf");
   TreeSut s;
@@ -245,7 +245,16 @@ RC_GTEST_PROP(SacStateProp, S1_3_ExptreePropagationEqualsFromScratch, ()) {
   s.input = std::make_unique<TreeInput>(*s.rt, m);
   s.out = sa_exptree(*s.rt, s.input->root());
   verify_tree(s, m);
+  int prefix = min_commands ? *uniform(min_commands, min_commands + 11) : 0;
+  for (int k = 0; k < prefix; ++k) {
+    auto cmd = *rc::state::gen::execOneOfWithArgs<TreeEdit>()(m);
+    cmd->run(m, s);
+    cmd->apply(m);
+  }
   rc::state::check(m, s, rc::state::gen::execOneOfWithArgs<TreeEdit>());
 }
+
+RC_GTEST_PROP(SacStateProp, S1_3_ExptreePropagationEqualsFromScratch, ()) { check_exptree(29, 0); }
+TEST(SacStateProp, S1_3_ExptreeLongRuns) { check_cases(15, [] { check_exptree(200, 50); }); }
 
 }  // namespace
