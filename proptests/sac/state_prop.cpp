@@ -17,6 +17,13 @@ using namespace kmr::sacprograms;
 
 namespace {
 
+// rc::gen::inRange narrows its range at small sizes (positions near 0, first kinds only, small
+// values); edits and elements here are drawn from the whole range at every size.
+template <class T>
+rc::Gen<T> uniform(T lo, T hi) {
+  return rc::gen::resize(100, rc::gen::inRange<T>(lo, hi));
+}
+
 struct Model {
   std::vector<long long> values;
 };
@@ -28,9 +35,9 @@ struct Sut {
 // Elements: small integers (many duplicates) or, for quickhull, points on a small grid.
 rc::Gen<long long> element(bool points) {
   if (points)
-    return rc::gen::map(rc::gen::pair(rc::gen::inRange<long long>(-8, 9), rc::gen::inRange<long long>(-8, 9)),
+    return rc::gen::map(rc::gen::pair(uniform<long long>(-8, 9), uniform<long long>(-8, 9)),
                         [](std::pair<long long, long long> p) { return encode_point(p.first, p.second); });
-  return rc::gen::inRange<long long>(-20, 21);
+  return uniform<long long>(-20, 21);
 }
 
 void verify(const ListSession& s, const Model& m) {
@@ -52,8 +59,8 @@ struct Edit {
 };
 
 Edit gen_edit(std::size_t size, bool points) {
-  int kind = size == 0 ? 0 : *rc::gen::inRange(0, 3);
-  std::size_t pos = *rc::gen::inRange<std::size_t>(0, kind == 0 ? size + 1 : size);
+  int kind = size == 0 ? 0 : *uniform(0, 3);
+  std::size_t pos = *uniform<std::size_t>(0, kind == 0 ? size + 1 : size);
   return Edit{kind, pos, *element(points)};
 }
 
@@ -72,9 +79,22 @@ void apply_edit(const Edit& e, ListSession& s) {
 
 bool g_points = false;  // set per property before rc::state::check
 
+
+// Shrinking drops commands, so a later edit's position may no longer exist: such sequences are
+// skipped (rc::state preconditions), never applied out of range.
+bool edit_fits(const Edit& e, std::size_t& size) {
+  if (e.kind == 0 ? e.pos > size : e.pos >= size) return false;
+  size += e.kind == 0 ? 1 : e.kind == 1 ? -1 : 0;
+  return true;
+}
+
 struct OneEdit : rc::state::Command<Model, Sut> {
   Edit e;
   explicit OneEdit(const Model& m) : e(gen_edit(m.values.size(), g_points)) {}
+  void checkPreconditions(const Model& m) const override {
+    std::size_t size = m.values.size();
+    RC_PRE(edit_fits(e, size));
+  }
   void apply(Model& m) const override { apply_edit(e, m.values); }
   void run(const Model& m, Sut& sut) const override {
     Model next = m;
@@ -90,11 +110,15 @@ struct Batch : rc::state::Command<Model, Sut> {
   std::vector<Edit> edits;
   explicit Batch(const Model& m) {
     std::size_t size = m.values.size();
-    int k = *rc::gen::inRange(2, 6);
+    int k = *uniform(2, 6);
     for (int i = 0; i < k; ++i) {
       edits.push_back(gen_edit(size, g_points));
       size += edits.back().kind == 0 ? 1 : edits.back().kind == 1 ? -1 : 0;
     }
+  }
+  void checkPreconditions(const Model& m) const override {
+    std::size_t size = m.values.size();
+    for (const Edit& e : edits) RC_PRE(edit_fits(e, size));
   }
   void apply(Model& m) const override {
     for (const Edit& e : edits) apply_edit(e, m.values);
@@ -110,9 +134,9 @@ struct Batch : rc::state::Command<Model, Sut> {
 };
 
 // Initial inputs: empty, all duplicates, sorted, reverse sorted, or random.
-std::vector<long long> initial(bool points) {
+std::vector<long long> initial(bool points, std::size_t max_n) {
   int shape = *rc::gen::element(0, 1, 2, 3, 4);
-  std::size_t n = shape == 0 ? 0 : *rc::gen::inRange<std::size_t>(1, 40);
+  std::size_t n = shape == 0 ? 0 : *uniform<std::size_t>(1, max_n + 1);
   std::vector<long long> v = *rc::gen::container<std::vector<long long>>(n, element(points));
   if (shape == 1) std::fill(v.begin(), v.end(), v.empty() ? 0 : v[0]);
   if (shape == 2) std::sort(v.begin(), v.end());
@@ -122,12 +146,34 @@ std::vector<long long> initial(bool points) {
   return v;
 }
 
-void check_program(const std::string& name) {
+// max_n: largest initial input; min_commands: a prefix of at least that many commands runs before
+// rc::state's own sequence (long runs).
+void check_program(const std::string& name, std::size_t max_n = 39, int min_commands = 0) {
   g_points = name == "quickhull";
-  Model m{initial(g_points)};
+  Model m{initial(g_points, max_n)};
   Sut sut{std::make_unique<ListSession>(list_program(name), m.values)};
   verify(*sut.session, m);
+  int prefix = min_commands ? *uniform(min_commands, min_commands + 11) : 0;
+  for (int k = 0; k < prefix; ++k) {
+    auto cmd = *rc::state::gen::execOneOfWithArgs<OneEdit, OneEdit, Batch>()(m);
+    cmd->run(m, sut);
+    cmd->apply(m);
+  }
   rc::state::check(m, sut, rc::state::gen::execOneOfWithArgs<OneEdit, OneEdit, Batch>());
+}
+
+// Runs a property with at most `cases` successful cases (the suite-wide RC_PARAMS seed applies).
+template <class F>
+void check_cases(int cases, F f) {
+  auto params = rc::detail::configuration().testParams;
+  params.maxSuccess = std::min(params.maxSuccess, cases);
+  rc::detail::TestMetadata md;
+  md.id = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  md.description = md.id;
+  auto result = rc::detail::checkProperty(rc::detail::toProperty(f), md, params);
+  std::ostringstream ss;
+  rc::detail::printResultMessage(result, ss);
+  if (!result.template is<rc::detail::SuccessResult>()) FAIL() << ss.str();
 }
 
 RC_GTEST_PROP(SacStateProp, S1_3_MapPropagationEqualsFromScratch, ()) { check_program("map"); }
@@ -136,6 +182,14 @@ RC_GTEST_PROP(SacStateProp, S1_3_SumPropagationEqualsFromScratch, ()) { check_pr
 RC_GTEST_PROP(SacStateProp, S1_3_QuicksortPropagationEqualsFromScratch, ()) { check_program("quicksort"); }
 RC_GTEST_PROP(SacStateProp, S1_3_MergesortPropagationEqualsFromScratch, ()) { check_program("mergesort"); }
 RC_GTEST_PROP(SacStateProp, S1_3_QuickhullPropagationEqualsFromScratch, ()) { check_program("quickhull"); }
+
+// Long runs: ≥ 50 commands on inputs of up to 200 elements (fewer cases for the Θ(n log n) traces).
+TEST(SacStateProp, S1_3_MapLongRuns) { check_cases(15, [] { check_program("map", 200, 50); }); }
+TEST(SacStateProp, S1_3_FilterLongRuns) { check_cases(15, [] { check_program("filter", 200, 50); }); }
+TEST(SacStateProp, S1_3_SumLongRuns) { check_cases(10, [] { check_program("sum", 200, 50); }); }
+TEST(SacStateProp, S1_3_QuicksortLongRuns) { check_cases(5, [] { check_program("quicksort", 200, 50); }); }
+TEST(SacStateProp, S1_3_MergesortLongRuns) { check_cases(2, [] { check_program("mergesort", 200, 50); }); }
+TEST(SacStateProp, S1_3_QuickhullLongRuns) { check_cases(5, [] { check_program("quickhull", 200, 50); }); }
 
 // ---- expression trees: the model is the plain tree -------------------------------------------
 struct TreeSut {
@@ -160,10 +214,10 @@ struct TreeEdit : rc::state::Command<PlainTree, TreeSut> {
   explicit TreeEdit(const PlainTree& m) {
     auto leaves = m.leaves();
     auto merge = m.mergeable();
-    kind = merge.empty() ? *rc::gen::inRange(0, 2) : *rc::gen::inRange(0, 3);
+    kind = merge.empty() ? *uniform(0, 2) : *uniform(0, 3);
     node = kind == 2 ? *rc::gen::elementOf(merge) : *rc::gen::elementOf(leaves);
-    op = *rc::gen::inRange(0, 3);
-    value = *rc::gen::inRange<long long>(-50, 51);
+    op = *uniform(0, 3);
+    value = *uniform<long long>(-50, 51);
   }
   void apply(PlainTree& m) const override {
     if (kind == 0) m.set(node, value);
@@ -182,8 +236,8 @@ struct TreeEdit : rc::state::Command<PlainTree, TreeSut> {
   void show(std::ostream& os) const override { os << "tree edit kind=" << kind << " node=" << node; }
 };
 
-RC_GTEST_PROP(SacStateProp, S1_3_ExptreePropagationEqualsFromScratch, ()) {
-  std::size_t leaves = *rc::gen::inRange<std::size_t>(1, 30);
+void check_exptree(std::size_t max_leaves, int min_commands) {
+  std::size_t leaves = *uniform<std::size_t>(1, max_leaves + 1);
   PlainTree m = PlainTree::random(leaves, *rc::gen::arbitrary<std::uint64_t>());
   RC_CLASSIFY(leaves == 1, "single leaf");
   TreeSut s;
@@ -191,7 +245,16 @@ RC_GTEST_PROP(SacStateProp, S1_3_ExptreePropagationEqualsFromScratch, ()) {
   s.input = std::make_unique<TreeInput>(*s.rt, m);
   s.out = sa_exptree(*s.rt, s.input->root());
   verify_tree(s, m);
+  int prefix = min_commands ? *uniform(min_commands, min_commands + 11) : 0;
+  for (int k = 0; k < prefix; ++k) {
+    auto cmd = *rc::state::gen::execOneOfWithArgs<TreeEdit>()(m);
+    cmd->run(m, s);
+    cmd->apply(m);
+  }
   rc::state::check(m, s, rc::state::gen::execOneOfWithArgs<TreeEdit>());
 }
+
+RC_GTEST_PROP(SacStateProp, S1_3_ExptreePropagationEqualsFromScratch, ()) { check_exptree(29, 0); }
+TEST(SacStateProp, S1_3_ExptreeLongRuns) { check_cases(15, [] { check_exptree(200, 50); }); }
 
 }  // namespace

@@ -2,6 +2,8 @@
 // trace and output; edits of stable programs cost little work (cognates reused); overhead and
 // speedup of the benchmark programs, measured.
 #include <cstdio>
+#include <functional>
+#include <map>
 #include <random>
 #include <string>
 
@@ -9,6 +11,7 @@
 #include "sacprograms/bench.hpp"
 #include "sac/runtime.hpp"
 #include "sacprograms/exptree.hpp"
+#include "sacprograms/generality.hpp"
 #include "sacprograms/session.hpp"
 
 namespace kmr::audit {
@@ -64,9 +67,79 @@ Verdict propagation_equals_from_scratch(const Options& o) {
       if (!ok && bad++ == 0) first_bad = "exptree round " + std::to_string(r);
     }
   }
+  // The Appendix A.2 shapes (issue 8 §1): certificates created in the run and flipped by their
+  // owner, destination memo with repeated keys, a write that moves earlier.
+  {
+    std::size_t m = o.quick ? 60 : 200;
+    for (int prog = 0; prog < 3; ++prog) {
+      std::mt19937_64 rng(o.seed + 77 + static_cast<std::uint64_t>(prog));
+      std::vector<long long> vals(m);
+      std::vector<std::uint64_t> ids(m);
+      for (std::size_t i = 0; i < m; ++i) {
+        vals[i] = prog == 2 ? -static_cast<long long>(rng() % 10) : static_cast<long long>(rng() % 13) - 6;
+        ids[i] = i + 1;
+      }
+      std::uint64_t next_id = m + 1;
+      std::map<std::uint64_t, bool> flips;
+      auto build = [&](Runtime& rt, ListInput& in, CertificateOwner& owner) -> std::function<std::vector<long long>()> {
+        if (prog == 0) {
+          Root* r = sa_certified_filter(rt, in.root(), &owner);
+          return [&rt, r] { return to_vector(rt, r); };
+        }
+        if (prog == 1) {
+          Root* r = sa_next_greater(rt, in.root());
+          return [&rt, r] { return to_vector(rt, r); };
+        }
+        Mod<long long>* r = sa_first_positive(rt, in.root());
+        return [&rt, r] { return std::vector<long long>{rt.deref(r)}; };
+      };
+      Runtime rt;
+      CertificateOwner owner(rt);
+      ListInput in(rt, vals, ids);
+      auto out = build(rt, in, owner);
+      for (std::size_t r = 0; r < rounds; ++r) {
+        std::size_t size = vals.size();
+        int kind = size == 0 ? 0 : static_cast<int>(rng() % (prog == 0 ? 4 : 3));
+        std::size_t pos = static_cast<std::size_t>(rng() % (kind == 0 ? size + 1 : size));
+        long long x = static_cast<long long>(rng() % 13) - (prog == 2 ? 11 : 6);
+        if (kind == 0) {
+          in.insert(pos, next_id, x);
+          vals.insert(vals.begin() + static_cast<std::ptrdiff_t>(pos), x);
+          ids.insert(ids.begin() + static_cast<std::ptrdiff_t>(pos), next_id++);
+        } else if (kind == 1) {
+          in.erase(pos);
+          vals.erase(vals.begin() + static_cast<std::ptrdiff_t>(pos));
+          ids.erase(ids.begin() + static_cast<std::ptrdiff_t>(pos));
+        } else if (kind == 2) {
+          in.set(pos, x);
+          vals[pos] = x;
+        } else {
+          std::uint64_t name = input_cell_name(ids[pos]);
+          flips[name] = !certificate_truth(flips, name);
+          owner.flip(name);
+        }
+        in.propagate();
+        Runtime frt;
+        CertificateOwner fowner(frt);
+        fowner.set_flips(flips);
+        ListInput fin(frt, vals, ids);
+        build(frt, fin, fowner);
+        std::vector<long long> want = prog == 0   ? static_certified_filter(vals, ids, flips)
+                                      : prog == 1 ? static_next_greater(vals)
+                                                  : std::vector<long long>{static_first_positive(vals)};
+        ++checked;
+        bool ok = out() == want && rt.signature() == frt.signature() &&
+                  rt.stats().trace_nodes == frt.stats().trace_nodes && rt.stats().live_mods == frt.stats().live_mods &&
+                  (prog != 0 || owner.live().size() == ids.size());
+        if (!ok && bad++ == 0) first_bad = std::string(prog == 0 ? "certified_filter" : prog == 1 ? "next_greater" : "first_positive") +
+                                           " round " + std::to_string(r);
+      }
+    }
+  }
   v.pass = bad == 0;
-  v.summary = "7 programs, n=" + std::to_string(n) + ": after each propagation output = static twin, trace " +
-              "signature and live counts = from-scratch run" + (bad ? "; first failure: " + first_bad : "");
+  v.summary = "7 programs, n=" + std::to_string(n) + ", and 3 App. A shapes (certificates, destination memo, " +
+              "moved write): after each propagation output = static twin, trace signature and live counts = " +
+              "from-scratch run" + (bad ? "; first failure: " + first_bad : "");
   v.figure("propagations_checked", std::to_string(checked));
   v.figure("mismatches", std::to_string(bad));
   return v;
@@ -138,7 +211,8 @@ Verdict overhead_and_speedup(const Options& o) {
     }
     names.push_back(r.program);
     v.figure(r.program, "overhead " + fmt(r.overhead) + ", speedup " + fmt(r.speedup) + ", " +
-                            std::to_string(r.trace_nodes) + " trace nodes, " + fmt(r.bytes_per_node) + " B/node" +
+                            std::to_string(r.trace_nodes) + " trace nodes, " + fmt(r.bytes_per_node) + " B/node, " +
+                            fmt(r.bytes_per_element) + " B/element" +
                             (r.output_ok ? "" : ", WRONG OUTPUT"));
   }
   for (int k = 0; k < 2; ++k) {

@@ -45,6 +45,9 @@ Runtime::~Runtime() {
     if (n->kind == Kind::Alloc) {
       if (ModBase* m = static_cast<AllocNode*>(n)->mod) m->~ModBase();
     }
+    if (n->kind == Kind::MemoStart) {
+      if (ModBase* m = static_cast<MemoNode*>(n)->owned()) m->~ModBase();
+    }
     destroy_node(n);
     s = nx;
   }
@@ -108,7 +111,7 @@ void Runtime::inside_failed(const char* op) const {
   fail(std::string(op) + " outside a run (trace operations need rt.run or propagate)");
 }
 
-static std::string hex(std::uint64_t v) {
+std::string Runtime::hex(std::uint64_t v) {
   char buf[20];
   std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
   return buf;
@@ -116,16 +119,21 @@ static std::string hex(std::uint64_t v) {
 
 void Runtime::check_readable(const ModBase* m) const {
   if (m->dead) fail("read of a discarded modifiable " + hex(m->name));
-  if (m->input) return;
+  if (m->input || m->external) return;
   if (!m->written || !m->writer || !OrderList::before(m->writer, now_))
     fail("read of modifiable " + hex(m->name) + " before it was written in this execution");
 }
 
-void Runtime::check_writable(const ModBase* m) const {
+// A writer inside (now, finger) belongs to the trace being replaced. A writer at or after the
+// finger is a later write of the previous execution: the write moves earlier (CEAL accepts it); a
+// consistent program removes the later write before propagation ends (checked in propagate()).
+bool Runtime::check_writable(const ModBase* m) const {
   if (m->input) fail("write to input modifiable " + hex(m->name) + " inside a run (use change outside runs)");
+  if (m->external) fail("write to traceable " + hex(m->name) + " inside a run (its owner sets it with change)");
   if (m->dead) fail("write to a discarded modifiable " + hex(m->name));
-  if (m->writer && !in_window(m->writer))
-    fail("modifiable " + hex(m->name) + " written twice in one execution");
+  if (!m->writer || in_window(m->writer)) return false;
+  if (finger_ && !OrderList::before(m->writer, finger_)) return true;
+  fail("modifiable " + hex(m->name) + " written twice in one execution");
 }
 
 // ---- readers and the queue of affected reads --------------------------------------------------
@@ -215,7 +223,7 @@ void Runtime::heap_erase(ReadNode* r) {
 // ---- key index --------------------------------------------------------------------------------
 void Runtime::index(KeyedNode* n, ModBase* anchor) {
   if (anchor) {
-    n->global = false;
+    n->flag = false;
     n->hnext = anchor->keyed;
     if (anchor->keyed) anchor->keyed->hpprev = &n->hnext;
     anchor->keyed = n;
@@ -238,7 +246,7 @@ void Runtime::index(KeyedNode* n, ModBase* anchor) {
   if (*b) (*b)->hpprev = &n->hnext;
   *b = n;
   n->hpprev = b;
-  n->global = true;
+  n->flag = true;
   ++indexed_;
 }
 
@@ -248,34 +256,17 @@ void Runtime::unindex(KeyedNode* n) {
   if (n->hnext) n->hnext->hpprev = n->hpprev;
   n->hnext = nullptr;
   n->hpprev = nullptr;
-  if (n->global) --indexed_;
-}
-
-AllocNode* Runtime::find_alloc(std::uint64_t h, const void* t, const ModBase* anchor) const {
-  AllocNode* best = nullptr;
-  for (KeyedNode* n = chain(h, anchor); n; n = n->hnext) {
-    if (n->hash != h || n->tag != t || n->kind != Kind::Alloc) continue;
-    auto* a = static_cast<AllocNode*>(n);
-    if (!a->mod || !in_window(a)) continue;
-    if (!best || OrderList::before(a, best)) best = a;
-  }
-  return best;
-}
-
-// A live allocation with the same key before the current time belongs to this execution too.
-void Runtime::check_unique_key(const Label& label, std::uint64_t h, const ModBase* anchor) const {
-  for (KeyedNode* n = chain(h, anchor); n; n = n->hnext) {
-    if (n->hash != h || n->kind != Kind::Alloc || !static_cast<AllocNode*>(n)->mod) continue;
-    if (OrderList::before(n, now_) || n == now_)
-      fail(std::string("allocation key ") + label.name + ":" + hex(h) + " used twice in one execution");
-  }
+  if (n->flag) --indexed_;
 }
 
 // ---- change propagation (§1.3.1) --------------------------------------------------------------
 void Runtime::rerun(ReadNode* r) {
   ++stats_.reads_reexecuted;
   Scope s(*this, r, r->end);
-  r->rerun();
+  {
+    FreshScope fs(*this, read_scope(r->mod));
+    r->rerun();
+  }
   discard(now_, r->end);  // what was not reused inside r's interval
 }
 
@@ -289,6 +280,9 @@ void Runtime::propagate() {
     Scope s(*this, om_.base(), nullptr);
     propagate_until(nullptr);
   }
+  if (stale_writes_ != 0)
+    fail(std::to_string(stale_writes_) + " write(s) moved earlier but the later write is still in the trace: "
+         "the program writes a modifiable twice in one execution");
   collect_dead();
 }
 
@@ -308,9 +302,15 @@ void Runtime::kill(Node* n) {
       if (r->heap >= 0) heap_erase(r);
       break;
     }
-    case Kind::MemoStart:
-      unindex(static_cast<KeyedNode*>(n));
+    case Kind::MemoStart: {
+      auto* memo = static_cast<MemoNode*>(n);
+      unindex(memo);
+      if (ModBase* m = memo->owned()) {
+        m->dead = true;
+        dead_.push_back(m);
+      }
       break;
+    }
     case Kind::Alloc: {
       auto* a = static_cast<AllocNode*>(n);
       unindex(a);
@@ -323,6 +323,7 @@ void Runtime::kill(Node* n) {
     }
     case Kind::Write: {
       auto* w = static_cast<WriteNode*>(n);
+      if (w->flag) --stale_writes_;
       if (w->mod->writer == w) w->mod->writer = nullptr;
       break;
     }
@@ -395,37 +396,66 @@ void Runtime::release(ModBase* m) {
 }
 
 // ---- introspection ----------------------------------------------------------------------------
+namespace {
+void put_hex(std::string& out, std::uint64_t v) {  // 16 hex digits, no temporaries
+  static const char digits[] = "0123456789abcdef";
+  char buf[16];
+  for (int i = 15; i >= 0; --i, v >>= 4) buf[i] = digits[v & 15];
+  out.append(buf, 16);
+}
+}  // namespace
+
 std::string Runtime::signature() const {
   std::string out;
+  out.reserve(live_nodes_ * 24);
   for (const Stamp* s = om_.base()->next; s; s = s->next) {
     const Node* n = static_cast<const Node*>(s);
     switch (n->kind) {
       case Kind::ReadStart:
-        out += "R" + hex(static_cast<const ReadNode*>(n)->mod->name);
+        out += 'R';
+        put_hex(out, static_cast<const ReadNode*>(n)->mod->name);
         break;
       case Kind::End:
-        out += ")";
+        out += ')';
         break;
       case Kind::MemoStart: {
         auto* m = static_cast<const MemoNode*>(n);
-        out += "M";
+        out += 'M';
         out += m->label->name;
-        out += ":" + hex(m->hash);
+        out += ':';
+        put_hex(out, m->hash);
+        out += '=';
+        put_hex(out, m->result_hash());
         break;
       }
       case Kind::Alloc: {
         auto* a = static_cast<const AllocNode*>(n);
-        out += "A" + hex(a->hash);
+        out += a->tag ? 'A' : 'F';
+        put_hex(out, a->hash);
+        if (a->mod && a->mod->external) {  // a traceable's value
+          out += '=';
+          put_hex(out, a->mod->value_hash());
+        }
         break;
       }
-      case Kind::Write:
-        out += "W" + hex(static_cast<const WriteNode*>(n)->mod->name);
+      case Kind::Write: {
+        const ModBase* m = static_cast<const WriteNode*>(n)->mod;
+        out += 'W';
+        put_hex(out, m->name);
+        out += '=';
+        put_hex(out, m->value_hash());
         break;
-      case Kind::IWrite:
-        out += "I" + hex(static_cast<const IWriteNode*>(n)->mod->name);
+      }
+      case Kind::IWrite: {
+        auto* w = static_cast<const IWriteNode*>(n);
+        out += 'I';
+        put_hex(out, w->mod->name);
+        out += '=';
+        put_hex(out, w->value_hash());
         break;
+      }
       case Kind::Hook:
-        out += "H";
+        out += 'H';
         out += static_cast<const HookNode*>(n)->label->name;
         break;
     }

@@ -5,8 +5,10 @@
 // iwrite); `Box.get $ m` → rt.read(m, k);
 // `put` / `PutMemoTable.mkPut` keyed allocation → rt.alloc<T>(label, keys...); `mfun` memoized
 // function → rt.memo<R>(label, key, body); `Box.Meta.new/change/deref` → rt.input / rt.change /
-// rt.deref; `Adaptive.Meta.propagate` → rt.propagate(). A traceable value whose changes come from
-// outside (a kinetic certificate's outcome) is an input modifiable: Traceable<T> (below).
+// rt.deref; `Adaptive.Meta.propagate` → rt.propagate(); `mfun` returning a Box → rt.memo_box;
+// unkeyed `Box.put` → rt.put / rt.fresh. A traceable value whose changes come from outside (a
+// kinetic certificate's outcome) is rt.traceable inside a run (keyed) or an input outside one
+// (Traceable<T> does either).
 //
 // Guarantees (tested in tests/sac and proptests/sac; see spec/sac.md):
 //  * Change propagation re-executes affected reads in increasing start time; after propagate() the
@@ -18,11 +20,22 @@
 //    exactly the reads whose visible value changed.
 //  * A memoized call is reused only if its interval lies inside the interval being re-executed and
 //    after the current time (Acar's rule); the initial run never reuses.
-//  * alloc under a key found in the interval being re-executed returns the same modifiable;
-//    allocation keys are unique within an execution (a repeated key throws ContractError: reusing
-//    one modifiable in two roles would corrupt the computation).
+//  * alloc (and traceable) under a key found in the interval being re-executed returns the same
+//    modifiable; keys are compared in full (label and key tuple), not by hash; allocation keys are
+//    unique within an execution (a repeated key throws ContractError: reusing one modifiable in two
+//    roles would corrupt the computation). fresh/put allocate anew each time, any number of times.
+//  * A traceable created in a run keeps the value its owner set when it is reused; only the owner
+//    changes it (rt.change outside runs).
+//  * memo_box(label, key, body): body writes the returned destination, possibly inside reads; the
+//    destination is reused exactly when the call is.
+//  * A write whose modifiable's current write lies after the interval being re-executed moves the
+//    write earlier (CEAL); the later write must be gone when propagate() returns (else ContractError).
+//  * The signature lists every node with names and digests of written values, memo results and
+//    traceables' values (value_hash; extend with an ADL canon_value).
 //  * Trace that is not reused is discarded; discarding runs its undo hooks (on_discard) in time
-//    order; modifiables allocated in discarded trace are freed at the end of propagate().
+//    order, after the replacement code that precedes them in the re-executed interval (so hooks
+//    carry a per-instance HookId); modifiables allocated in discarded trace are freed at the end of
+//    propagate().
 //  * Misuse throws kmr::ContractError with a message naming it: reading an unwritten modifiable,
 //    writing a modifiable twice in one execution, an allocation key used twice in one execution,
 //    writing an input inside a run, trace operations outside a run or inside an undo hook,
@@ -31,6 +44,7 @@
 //    check that no test can reach.)
 //  * Deterministic: no result or signature depends on pointer values or hash-table order.
 // Closures given to read/memo/on_discard are stored and may be re-run: capture by value.
+#include <concepts>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -90,6 +104,42 @@ std::uint64_t canon_key(const std::tuple<A...>& t) {
   return h;
 }
 
+// value_hash(x): a 64-bit digest of a written value or memo result for the signature (§1.3.1
+// from-scratch comparison: a stale value under an unchanged name must show). Canonical like
+// canon_key (modifiables by name); extend with an ADL overload `std::uint64_t canon_value(const T&)`.
+template <class T>
+std::uint64_t value_hash(const T& x);
+namespace detail {
+template <class T>
+concept HasCanonValue = requires(const T& x) {
+  { canon_value(x) } -> std::convertible_to<std::uint64_t>;
+};
+}  // namespace detail
+template <class T>
+std::uint64_t value_hash(const T& x) {
+  if constexpr (detail::HasCanonValue<T>) {
+    return canon_value(x);
+  } else if constexpr (std::is_same_v<T, bool>) {
+    return x ? 0xb1 : 0xb0;
+  } else if constexpr (std::is_integral_v<T> || std::is_enum_v<T>) {
+    return mix(0x1a, static_cast<std::uint64_t>(x));
+  } else if constexpr (std::is_floating_point_v<T>) {
+    double d = x == 0 ? 0.0 : static_cast<double>(x);  // -0 == 0
+    std::uint64_t b;
+    std::memcpy(&b, &d, sizeof b);
+    return mix(0xf1, b);
+  } else if constexpr (std::is_pointer_v<T> && std::is_convertible_v<T, const ModBase*>) {
+    return canon_key(static_cast<const ModBase*>(x));
+  } else if constexpr (requires { std::tuple_size<T>::value; }) {
+    std::uint64_t h = 0x7a;
+    std::apply([&h](const auto&... e) { ((h = mix(h, value_hash(e))), ...); }, x);
+    return h;
+  } else {
+    static_assert(sizeof(T) == 0, "sac: define std::uint64_t canon_value(const T&) for this value type");
+    return 0;
+  }
+}
+
 // The anchor of a key: its first modifiable, on whose list the memo/alloc node is indexed (the
 // modifiable was just touched, so lookups stay in cache); keys without one use a hash table.
 template <class T>
@@ -120,7 +170,9 @@ enum class Kind : std::uint8_t { ReadStart, End, MemoStart, Alloc, Write, IWrite
 // pointer (placed before their Node part); Runtime::destroy_node dispatches on kind.
 struct Node : Stamp {
   Kind kind;
-  bool global = false;        // KeyedNode: in the runtime's hash table, else on its anchor's list
+  // KeyedNode: in the runtime's hash table (else on its anchor's list); WriteNode: superseded by an
+  // earlier write (§1 item 4).
+  bool flag = false;
   std::uint16_t bytes = 0;    // allocation size (make_node checks that it fits)
   explicit Node(Kind k) : kind(k) {}
 };
@@ -149,7 +201,7 @@ struct IReadNode : ReadNode {  // a read of an IMod: on the reader list of the v
 
 struct KeyedNode : Node {  // memo and alloc nodes, indexed by key hash
   std::uint64_t hash = 0;
-  const void* tag = nullptr;  // identifies the key/value types
+  const void* tag = nullptr;  // identifies the key/value types; null: a fresh allocation (never indexed)
   KeyedNode* hnext = nullptr;
   KeyedNode** hpprev = nullptr;
   using Node::Node;
@@ -160,6 +212,8 @@ struct MemoNode : KeyedNode {
   Node* end = nullptr;
   MemoNode() : KeyedNode(Kind::MemoStart) {}
   virtual ~MemoNode() = default;  // MemoImpl holds the key and result
+  virtual std::uint64_t result_hash() const = 0;
+  virtual ModBase* owned() const = 0;  // a memo_box destination, freed with this node's trace
 };
 
 struct AllocNode : KeyedNode {
@@ -188,10 +242,14 @@ struct IWriteNode : Node {
   IWriteNode() : Node(Kind::IWrite) {}
   virtual ~IWriteNode() = default;
   virtual bool same_as_previous() const = 0;
+  virtual std::uint64_t value_hash() const = 0;
 };
+
+using HookId = std::uint64_t;  // per-instance identity of an undo hook (a serial, never reused)
 
 struct HookNode : Node {
   const Label* label = nullptr;
+  HookId id = 0;
   HookNode() : Node(Kind::Hook) {}
   virtual ~HookNode() = default;
   virtual void undo() = 0;
@@ -207,13 +265,16 @@ struct ModBase {
   bool written = false;
   bool dead = false;
   bool imperative = false;      // an IMod
+  bool external = false;        // a traceable allocated in a run: set by its owner between runs
   std::uint32_t bytes = 0;
   virtual ~ModBase() = default;
+  virtual std::uint64_t value_hash() const = 0;  // of the current value (signature)
 };
 
 template <class T>
 struct Mod : ModBase {
   T value{};
+  std::uint64_t value_hash() const override { return sac::value_hash(value); }
 };
 template <class T>
 using Box = Mod<T>;  // ΔML's name
@@ -229,6 +290,7 @@ template <class T>
 struct IMod : IModBase {
   T initial{};
   IMod() { first.value = &initial; }
+  std::uint64_t value_hash() const override { return sac::value_hash(initial); }
 };
 template <class T>
 using IBox = IMod<T>;
@@ -250,6 +312,8 @@ struct Stats {
   std::uint64_t allocs_reused = 0;  // keyed allocations that returned an existing modifiable
   std::uint64_t nodes_discarded = 0;
   std::uint64_t hooks_run = 0;
+  std::uint64_t writes_moved_earlier = 0;  // writes that superseded a later write (§1 item 4)
+  std::uint64_t fresh_allocs = 0;          // unkeyed allocations (never reused)
   std::uint64_t om_relabels = 0;
 };
 
@@ -319,10 +383,12 @@ class Runtime {
     inputs_.insert(m);
     return m;
   }
+  // change(m, v): m is an input, or a traceable the computation allocated (rt.traceable).
   template <class T>
   void change(Mod<T>* m, T value) {
     outside("change");
-    if (!m->input) fail("change: only input modifiables are changed from outside a run");
+    if (!m->input && !m->external)
+      fail("change: only inputs and traceables are changed from outside a run");
     if (m->value == value) return;
     m->value = std::move(value);
     dirty(m);
@@ -354,13 +420,20 @@ class Runtime {
     append(r);
     r->mod = m;
     link_reader(r, &m->readers);
-    r->k(static_cast<const T&>(m->value));
+    {
+      FreshScope fs(*this, read_scope(m));
+      r->k(static_cast<const T&>(m->value));
+    }
     r->end = append(make_node<EndNode>());
   }
   template <class T>
   void write(Mod<T>* m, T value) {
     inside("write");
-    check_writable(m);
+    if (check_writable(m)) {  // the write moved earlier: the later one must go before propagate ends
+      m->writer->flag = true;
+      ++stale_writes_;
+      ++stats_.writes_moved_earlier;
+    }
     WriteNode* w = make_node<WriteNode>();
     append(w);
     w->mod = m;
@@ -375,7 +448,7 @@ class Runtime {
   // Imperative modifiables (ΔML IBox): ialloc is keyed like alloc and sets the initial value.
   template <class T, class... K>
   IMod<T>* ialloc(const Label& label, T initial, const K&... keys) {
-    IMod<T>* m = alloc_impl<IMod<T>>(label, keys...);
+    IMod<T>* m = alloc_impl<IMod<T>>(label, nullptr, keys...);
     if (!(m->initial == initial)) {
       m->initial = std::move(initial);
       requeue(m->first.readers);
@@ -394,7 +467,10 @@ class Runtime {
     r->mod = m;
     r->ver = v;
     link_reader(r, &v->readers);
-    r->k(*static_cast<const T*>(v->value));
+    {
+      FreshScope fs(*this, read_scope(m));
+      r->k(*static_cast<const T*>(v->value));
+    }
     r->end = append(make_node<EndNode>());
   }
   template <class T>
@@ -430,23 +506,72 @@ class Runtime {
 
   template <class T, class... K>
   Mod<T>* alloc(const Label& label, const K&... keys) {
-    return alloc_impl<Mod<T>>(label, keys...);
+    return alloc_impl<Mod<T>>(label, nullptr, keys...);
+  }
+  // A traceable value created by the computation (§1 item 1; a kinetic certificate): keyed like
+  // alloc (the same key inside the re-executed interval returns the same traceable, with the value
+  // its owner last set); `initial` is its value when it is new. Read with rt.read; only its owner
+  // changes it, with rt.change outside runs, then rt.propagate(). It is freed with its trace (the
+  // owner learns of that from an undo hook registered next to it).
+  template <class T, class... K>
+  Mod<T>* traceable(const Label& label, T initial, const K&... keys) {
+    bool reused = false;
+    Mod<T>* m = alloc_impl<Mod<T>>(label, &reused, keys...);
+    if (reused && !m->external) fail(std::string("traceable ") + label.name + ": key reused by a plain allocation");
+    if (!reused) {
+      m->external = true;
+      m->written = true;
+      m->value = std::move(initial);
+    }
+    return m;
+  }
+  // A fresh (unkeyed) allocation (ΔML Box.put's box; CEAL's modref()): any number per execution,
+  // never reused by re-execution. Named canonically by (label, enclosing read or memo call, ordinal
+  // among that scope's fresh allocations), so signatures of updated and from-scratch runs agree.
+  template <class T>
+  Mod<T>* fresh(const Label& label) {
+    return fresh_impl<Mod<T>>(label);
+  }
+  template <class M>
+  M* fresh_impl(const Label& label) {
+    inside("fresh");
+    auto* m = make_mod<M>();
+    m->name = mix(mix(label.hash, scope_), fresh_ordinal_++);
+    ++live_owned_;
+    ++stats_.fresh_allocs;
+    AllocNode* a = make_node<AllocNode>();
+    append(a);
+    a->hash = m->name;  // tag stays null: a fresh allocation, never indexed
+    a->mod = m;
+    m->owner = a;
+    return m;
+  }
+  template <class T>
+  Mod<T>* put(const Label& label, T value) {  // ΔML `Box.put $ v`: fresh, then written
+    Mod<T>* m = fresh<T>(label);
+    write(m, std::move(value));
+    return m;
   }
   template <class M, class... K>
-  M* alloc_impl(const Label& label, const K&... keys) {
+  M* alloc_impl(const Label& label, bool* reused, const K&... keys) {
     inside("alloc");
+    using A = AllocImpl<std::tuple<std::decay_t<K>...>>;
+    static_assert(std::is_trivially_destructible_v<A>, "sac: allocation keys must be trivially destructible");
     std::uint64_t h = label.hash;
     ((h = mix(h, canon_key(keys))), ...);
     ModBase* anchor = nullptr;
     ((anchor = anchor ? anchor : anchor_one(keys)), ...);
+    std::tuple<std::decay_t<K>...> key(keys...);
+    if (taken<M, A>(label, h, key, anchor))
+      fail(std::string("allocation key ") + label.name + ":" + hex(h) + " used twice in one execution");
     M* m = nullptr;
-    check_unique_key(label, h, anchor);
     if (finger_) {
-      if (AllocNode* a = find_alloc(h, tag<M>(), anchor)) {
+      if (A* a = find_alloc<M, A>(label, h, key, anchor)) {
         m = static_cast<M*>(a->mod);
         a->mod = nullptr;
         unindex(a);
         ++stats_.allocs_reused;
+        if (reused) *reused = true;
       }
     }
     if (!m) {
@@ -454,10 +579,10 @@ class Runtime {
       m->name = h;
       ++live_owned_;
     }
-    AllocNode* a = make_node<AllocNode>();
+    A* a = make_node<A>(&label, std::move(key));
     append(a);
     a->hash = h;
-    a->tag = tag<M>();
+    a->tag = tag<std::pair<M, A>>();
     a->mod = m;
     m->owner = a;
     index(a, anchor);
@@ -465,8 +590,13 @@ class Runtime {
   }
   template <class R, class Key, class F>
   R memo(const Label& label, const Key& key, F&& body) {
+    return memo_impl<MemoImpl<Key, R>, R>(label, key, [&body](MemoImpl<Key, R>*) { return body(); });
+  }
+  // memo with the node in hand: body(node) computes the result (memo_box allocates its
+  // destination into the node before running the user's body).
+  template <class M, class R, class Key, class F>
+  R memo_impl(const Label& label, const Key& key, F&& body) {
     inside("memo");
-    using M = MemoImpl<Key, R>;
     std::uint64_t h = mix(label.hash, canon_key(key));
     ModBase* anchor = anchor_of(key);
     if (finger_) {
@@ -484,7 +614,10 @@ class Runtime {
     m->hash = h;
     m->tag = tag<M>();
     m->label = &label;
-    R result = body();
+    R result = [&] {
+      FreshScope fs(*this, h);
+      return body(m);
+    }();
     // A body whose last trace operation was a read or memo call ends where that interval ends: the
     // memo shares its end stamp (no node of the body can follow it, and whatever discards the
     // shared stamp discards this memo too, as intervals nest).
@@ -494,13 +627,40 @@ class Runtime {
     index(m, anchor);
     return result;
   }
-  // Undo hook: f runs when this point of the trace is discarded (not on ~Runtime).
+  // Destination-passing memo (ΔML `mfun` returning a Box; CEAL's destination modrefs): a memoized
+  // call whose result depends on reads. body(dest) writes the destination, possibly inside reads;
+  // the call returns dest, a fresh allocation at the start of the call's interval, so it is reused
+  // exactly when the call is. Re-executing a read inside body rewrites dest, so readers of dest see
+  // results that depend on reads. (A keyed destination would add no reuse: a key found in the
+  // interval being re-executed comes with its memo call, which is then reused; and keying it would
+  // make two calls with one key in one execution collide, or make the choice between them depend
+  // on history, which the from-scratch comparison catches.)
+  // The destination lives in the memo node (one node and one stamp for call and allocation, as
+  // CEAL fuses them): it is named by the call's key and freed with the call's trace.
+  template <class T, class Key, class F>
+  Mod<T>* memo_box(const Label& label, const Key& key, F&& body) {
+    using M = MemoImpl<Key, Mod<T>*, true>;
+    return memo_impl<M, Mod<T>*>(label, key, [this, &body](M* node) {
+      auto* dest = make_mod<Mod<T>>();
+      dest->name = mix(node->hash, 0xde57);
+      ++live_owned_;
+      node->result = dest;
+      body(dest);
+      return dest;
+    });
+  }
+  // Undo hook: f runs when this point of the trace is discarded (not on ~Runtime). f may take its
+  // own HookId: the identity of this registration, distinct from every other hook's, so an owner
+  // that registers by name can tell a discarded registration from its replacement (spec/sac.md,
+  // "Undo hooks": discarded trace's hooks run after the replacing code of the same interval).
   template <class F>
-  void on_discard(const Label& label, F&& f) {
+  HookId on_discard(const Label& label, F&& f) {
     inside("on_discard");
     auto* h = make_node<HookImpl<std::decay_t<F>>>(std::forward<F>(f));
     h->label = &label;
+    h->id = ++hook_serial_;
     append(h);
+    return h->id;
   }
 
   // Introspection.
@@ -519,11 +679,22 @@ class Runtime {
     explicit ReadImpl(G&& g) : k(std::forward<G>(g)) {}
     void rerun() override { k(static_cast<const T&>(static_cast<Mod<T>*>(mod)->value)); }
   };
-  template <class Key, class R>
-  struct MemoImpl : MemoNode {
+  template <class Key, class R, bool Owns = false>
+  struct MemoImpl : MemoNode {  // Owns: result is a destination this node allocated (memo_box)
     Key key;
     R result{};
     explicit MemoImpl(const Key& k) : key(k) {}
+    std::uint64_t result_hash() const override { return sac::value_hash(result); }
+    ModBase* owned() const override {
+      if constexpr (Owns) return result;
+      else return nullptr;
+    }
+  };
+  template <class Keys>
+  struct AllocImpl : AllocNode {  // the full key, compared on reuse (not only its hash)
+    const Label* label;
+    Keys keys;
+    AllocImpl(const Label* l, Keys k) : label(l), keys(std::move(k)) {}
   };
   template <class T, class F>
   struct IReadImpl : IReadNode {
@@ -537,13 +708,17 @@ class Runtime {
     T value;
     explicit IWriteImpl(T v) : value(std::move(v)) {}
     bool same_as_previous() const override { return *static_cast<const T*>(version.vprev->value) == value; }
+    std::uint64_t value_hash() const override { return sac::value_hash(value); }
   };
   template <class F>
   struct HookImpl : HookNode {
     F f;
     template <class G>
     explicit HookImpl(G&& g) : f(std::forward<G>(g)) {}
-    void undo() override { f(); }
+    void undo() override {
+      if constexpr (std::is_invocable_v<F&, HookId>) f(id);
+      else f();
+    }
   };
   struct Scope {  // saves and restores (running, now, finger)
     Runtime& rt;
@@ -561,6 +736,20 @@ class Runtime {
       rt.finger_ = finger;
     }
   };
+  struct FreshScope {  // names fresh allocations by their enclosing read or memo call
+    Runtime& rt;
+    std::uint64_t scope;
+    std::uint32_t ordinal;
+    FreshScope(Runtime& r, std::uint64_t s) : rt(r), scope(r.scope_), ordinal(r.fresh_ordinal_) {
+      rt.scope_ = s;
+      rt.fresh_ordinal_ = 0;
+    }
+    ~FreshScope() {
+      rt.scope_ = scope;
+      rt.fresh_ordinal_ = ordinal;
+    }
+  };
+  static std::uint64_t read_scope(const ModBase* m) { return mix(m->name, 0x52ead); }
   template <class T>
   static const void* tag() {
     static const char t = 0;
@@ -573,8 +762,9 @@ class Runtime {
     if (!running_ || in_undo_) inside_failed(op);
   }
   [[noreturn]] void inside_failed(const char* op) const;
+  static std::string hex(std::uint64_t v);
   void check_readable(const ModBase* m) const;
-  void check_writable(const ModBase* m) const;
+  bool check_writable(const ModBase* m) const;  // true: m's write moves earlier than its current one
   bool in_window(const Stamp* s) const {  // strictly inside (now, finger)
     return finger_ && OrderList::before(now_, s) && OrderList::before(s, finger_);
   }
@@ -634,8 +824,30 @@ class Runtime {
   KeyedNode* chain(std::uint64_t h, const ModBase* anchor) const {
     return anchor ? anchor->keyed : buckets_[h & (buckets_.size() - 1)];
   }
-  AllocNode* find_alloc(std::uint64_t h, const void* t, const ModBase* anchor) const;
-  void check_unique_key(const Label& label, std::uint64_t h, const ModBase* anchor) const;
+  template <class M, class A>
+  static bool same_key(const KeyedNode* n, std::uint64_t h, const Label& label, const decltype(A::keys)& key) {
+    if (n->hash != h || n->kind != Kind::Alloc || n->tag != tag<std::pair<M, A>>()) return false;
+    auto* a = static_cast<const A*>(n);
+    return a->mod && (a->label == &label || std::strcmp(a->label->name, label.name) == 0) && a->keys == key;
+  }
+  // The live allocation with this full key inside (now, finger), earliest first.
+  template <class M, class A>
+  A* find_alloc(const Label& label, std::uint64_t h, const decltype(A::keys)& key, const ModBase* anchor) const {
+    A* best = nullptr;
+    for (KeyedNode* n = chain(h, anchor); n; n = n->hnext) {
+      if (!same_key<M, A>(n, h, label, key) || !in_window(n)) continue;
+      if (!best || OrderList::before(n, best)) best = static_cast<A*>(n);
+    }
+    return best;
+  }
+  // A live allocation with the same full key at or before the current time belongs to this
+  // execution too.
+  template <class M, class A>
+  bool taken(const Label& label, std::uint64_t h, const decltype(A::keys)& key, const ModBase* anchor) const {
+    for (KeyedNode* n = chain(h, anchor); n; n = n->hnext)
+      if (same_key<M, A>(n, h, label, key) && (OrderList::before(n, now_) || n == now_)) return true;
+    return false;
+  }
   template <class M, class Key>
   M* find_memo(std::uint64_t h, const Label& label, const Key& key, const ModBase* anchor) const {
     M* best = nullptr;
@@ -660,6 +872,10 @@ class Runtime {
   Stamp* finger_ = nullptr;
   bool running_ = false;
   bool in_undo_ = false;
+  std::uint64_t scope_ = 0;          // the enclosing read or memo call (fresh allocation names)
+  std::uint32_t fresh_ordinal_ = 0;  // fresh allocations so far in that scope
+  std::uint64_t stale_writes_ = 0;   // live writes superseded by an earlier write
+  HookId hook_serial_ = 0;
   std::vector<ReadNode*> heap_;
   std::vector<KeyedNode*> buckets_;
   std::size_t indexed_ = 0;
@@ -677,8 +893,12 @@ class Runtime {
 template <class T>
 class Traceable {
  public:
+  // Outside a run: an input named (label, id). Inside a run: rt.traceable(label, value, id), keyed
+  // and reused on re-execution like alloc (§1 item 1).
   Traceable(Runtime& rt, const Label& label, std::uint64_t id, T value)
-      : rt_(&rt), mod_(rt.input<T>(label, id, std::move(value))) {}
+      : rt_(&rt),
+        mod_(rt.running() ? rt.traceable<T>(label, std::move(value), id) : rt.input<T>(label, id, std::move(value))) {}
+  explicit Traceable(Runtime& rt, Mod<T>* m) : rt_(&rt), mod_(m) {}
   Mod<T>* mod() const { return mod_; }
   const T& get() const { return rt_->deref(mod_); }
   void set(T value) { rt_->change(mod_, std::move(value)); }

@@ -7,16 +7,15 @@ long long map_fn(long long x) { return 3 * x + 1; }
 bool keep_fn(long long x) { return (x & 3) != 0; }
 
 namespace {
-constexpr Label kMap{"map"}, kMapCell{"map.cell"}, kMapOut{"map.out"};
+constexpr Label kMap{"map"}, kMapOut{"map.out"};
 
+// ΔML map's loop as a destination-passing memo: the output cell lives in the memo node.
 List* map_list(Runtime* rt, List* l) {
-  return rt->memo<List*>(kMap, l, [rt, l] {
-    List* dest = rt->alloc<Cell>(kMapCell, l);
+  return rt->memo_box<Cell>(kMap, l, [rt, l](List* dest) {
     rt->read(l, [rt, dest](const Cell& c) {
       if (c.nil) rt->write(dest, Cell{});
       else rt->write(dest, Cell{false, map_fn(c.head), map_list(rt, c.tail)});
     });
-    return dest;
   });
 }
 
@@ -30,7 +29,7 @@ constexpr Label kFilterHead{"filter.head"}, kFilterOut{"filter.out"};
 
 struct Plus {
   using Ctx = long long;
-  static constexpr Label kHalf{"sum.half"}, kAbsorb{"sum.absorb"}, kReduce{"sum.reduce"}, kCell{"sum.cell"};
+  static constexpr Label kHalf{"sum.half"}, kAbsorb{"sum.absorb"}, kReduce{"sum.reduce"};
   static long long combine(Ctx, long long a, long long b) {
     return static_cast<long long>(static_cast<unsigned long long>(a) + static_cast<unsigned long long>(b));
   }

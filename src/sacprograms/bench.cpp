@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <random>
 
+#include <sys/resource.h>
+
 #include "sacprograms/exptree.hpp"
 #include "sacprograms/session.hpp"
 
@@ -15,6 +17,11 @@ namespace kmr::sacprograms {
 namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+double peak_rss_mb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) / 1024.0;  // Linux: KiB
+}
 }  // namespace
 
 long long bench_value(const std::string& program, std::uint64_t r) {
@@ -54,6 +61,7 @@ BenchRow bench_list(const std::string& name, std::size_t n, std::size_t edits, s
   auto st = rt.stats();
   row.trace_nodes = st.trace_nodes;
   row.bytes_per_node = st.trace_nodes ? static_cast<double>(st.bytes) / static_cast<double>(st.trace_nodes) : 0;
+  row.bytes_per_element = n ? static_cast<double>(st.bytes) / static_cast<double>(n) : 0;
 
   // Edits: alternately delete a random element and insert a random one after a random element
   // (or at the front).
@@ -77,6 +85,7 @@ BenchRow bench_list(const std::string& name, std::size_t n, std::size_t edits, s
   row.speedup = row.edit_s > 0 ? row.static_s / row.edit_s : 0;
   SArena arena;
   row.output_ok = reader() == p.twin(to_slist(arena, input.values()), arena, nullptr);
+  row.peak_rss_mb = peak_rss_mb();
   return row;
 }
 
@@ -97,6 +106,7 @@ BenchRow bench_exptree(std::size_t n, std::size_t edits, std::uint64_t seed) {
   auto st = rt.stats();
   row.trace_nodes = st.trace_nodes;
   row.bytes_per_node = st.trace_nodes ? static_cast<double>(st.bytes) / static_cast<double>(st.trace_nodes) : 0;
+  row.bytes_per_element = n ? static_cast<double>(st.bytes) / static_cast<double>(n) : 0;
   // Edits: insert (split a random leaf into an operator over two leaves), then delete it (merge).
   std::mt19937_64 rng(seed ^ 0xed175);
   std::vector<int> leaves = input.tree().leaves();
@@ -117,6 +127,7 @@ BenchRow bench_exptree(std::size_t n, std::size_t edits, std::uint64_t seed) {
   row.overhead = row.static_s > 0 ? row.initial_s / row.static_s : 0;
   row.speedup = row.edit_s > 0 ? row.static_s / row.edit_s : 0;
   row.output_ok = rt.deref(out) == input.tree().eval();
+  row.peak_rss_mb = peak_rss_mb();
   return row;
 }
 
@@ -208,9 +219,10 @@ std::string bench_json(const std::vector<BenchRow>& rows) {
     std::snprintf(buf, sizeof buf,
                   "  {\"program\": \"%s\", \"n\": %zu, \"static_s\": %.6g, \"initial_s\": %.6g, \"overhead\": %.4g, "
                   "\"edit_s\": %.6g, \"speedup\": %.6g, \"trace_nodes\": %llu, \"bytes_per_node\": %.4g, "
-                  "\"edits\": %zu, \"output_ok\": %s}%s\n",
+                  "\"bytes_per_element\": %.4g, \"peak_rss_mb\": %.1f, \"edits\": %zu, \"output_ok\": %s}%s\n",
                   r.program.c_str(), r.n, r.static_s, r.initial_s, r.overhead, r.edit_s, r.speedup,
-                  static_cast<unsigned long long>(r.trace_nodes), r.bytes_per_node, r.edits,
+                  static_cast<unsigned long long>(r.trace_nodes), r.bytes_per_node, r.bytes_per_element,
+                  r.peak_rss_mb, r.edits,
                   r.output_ok ? "true" : "false", i + 1 < rows.size() ? "," : "");
     out += buf;
   }

@@ -17,6 +17,8 @@ struct BenchRow {
   double static_s = 0, initial_s = 0, overhead = 0, edit_s = 0, speedup = 0;
   std::uint64_t trace_nodes = 0;
   double bytes_per_node = 0;
+  double bytes_per_element = 0;  // the runtime's bytes after the initial run ÷ n (trace + modifiables)
+  double peak_rss_mb = 0;        // the process's peak RSS after this row (per program: run --program)
   std::size_t edits = 0;
   bool output_ok = false;
 };

@@ -121,11 +121,10 @@ void PlainTree::merge(int i) {
 }
 
 namespace {
-constexpr Label kNode{"tree.node"}, kEval{"eval"}, kEvalRes{"eval.res"};
+constexpr Label kNode{"tree.node"}, kEval{"eval"};
 
 Mod<long long>* eval(Runtime* rt, Mod<TNode>* t) {
-  return rt->memo<Mod<long long>*>(kEval, t, [rt, t] {
-    Mod<long long>* dest = rt->alloc<long long>(kEvalRes, t);
+  return rt->memo_box<long long>(kEval, t, [rt, t](Mod<long long>* dest) {
     rt->read(t, [rt, dest](const TNode& n) {
       if (n.leaf) {
         rt->write(dest, n.val);
@@ -138,7 +137,6 @@ Mod<long long>* eval(Runtime* rt, Mod<TNode>* t) {
         rt->read(b, [rt, dest, op, x](long long y) { rt->write(dest, apply_op(op, x, y)); });
       });
     });
-    return dest;
   });
 }
 }  // namespace

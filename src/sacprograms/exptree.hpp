@@ -41,6 +41,11 @@ struct TNode {
   sac::Mod<TNode>* r = nullptr;
   bool operator==(const TNode&) const = default;
 };
+inline std::uint64_t canon_value(const TNode& t) {
+  return sac::mix(sac::mix(sac::mix(sac::mix(t.leaf, static_cast<std::uint64_t>(t.val)), static_cast<std::uint64_t>(t.op)),
+                           sac::canon_key(t.l)),
+                  sac::canon_key(t.r));
+}
 
 // The input tree as input modifiables, edited in step with a PlainTree it owns.
 class TreeInput {

@@ -29,6 +29,10 @@ struct Cons {
   Mod<Cons>* tail = nullptr;
   bool operator==(const Cons&) const = default;
 };
+template <class T>
+std::uint64_t canon_value(const Cons<T>& c) {  // the signature's digest of a cell (tail by name)
+  return c.nil ? 0x4e11 : sac::mix(sac::mix(0xc0, sac::value_hash(c.head)), sac::canon_key(c.tail));
+}
 using Cell = Cons<long long>;
 using List = Mod<Cell>;    // a list is a box holding a cell
 using Root = Mod<List*>;   // the box holding the first box of the input (or output) list
@@ -36,6 +40,7 @@ using Root = Mod<List*>;   // the box holding the first box of the input (or out
 struct Unit {
   bool operator==(const Unit&) const = default;
 };
+inline std::uint64_t canon_value(const Unit&) { return 0x0; }
 
 inline bool coin(const sac::ModBase* m, std::uint64_t round) { return sac::mix(m->name, round * 0x9e37 + 17) & 1; }
 
@@ -114,13 +119,11 @@ struct Reduce {
   using Ctx = typename Op::Ctx;
   // One round: the blocks of l (a block ends before every cell whose coin is heads) → block sums.
   static List* half(Runtime* rt, List* l, Ctx ctx, std::uint64_t r) {
-    return rt->memo<List*>(Op::kHalf, std::make_tuple(l, ctx, r), [rt, l, ctx, r] {
-      List* dest = rt->alloc<Cell>(Op::kCell, l, ctx, r);
+    return rt->memo_box<Cell>(Op::kHalf, std::make_tuple(l, ctx, r), [rt, l, ctx, r](List* dest) {
       rt->read(l, [rt, ctx, r, dest](const Cell& c) {
         if (c.nil) rt->write(dest, Cell{});
         else absorb(rt, c.tail, c.head, ctx, r, dest);
       });
-      return dest;
     });
   }
   static Unit absorb(Runtime* rt, List* l, long long acc, Ctx ctx, std::uint64_t r, List* dest) {

@@ -38,19 +38,19 @@ long long farther(std::pair<long long, long long> ab, long long p, long long q) 
 using Ctx = std::pair<long long, long long>;
 struct MinOp {
   using Ctx = long long;
-  static constexpr Label kHalf{"qh.min.half"}, kAbsorb{"qh.min.absorb"}, kReduce{"qh.min.reduce"}, kCell{"qh.min.cell"};
+  static constexpr Label kHalf{"qh.min.half"}, kAbsorb{"qh.min.absorb"}, kReduce{"qh.min.reduce"};
   static long long combine(Ctx, long long a, long long b) { return lex_less(b, a) ? b : a; }
   static long long identity(Ctx) { return 0; }
 };
 struct MaxOp {
   using Ctx = long long;
-  static constexpr Label kHalf{"qh.max.half"}, kAbsorb{"qh.max.absorb"}, kReduce{"qh.max.reduce"}, kCell{"qh.max.cell"};
+  static constexpr Label kHalf{"qh.max.half"}, kAbsorb{"qh.max.absorb"}, kReduce{"qh.max.reduce"};
   static long long combine(Ctx, long long a, long long b) { return lex_less(a, b) ? b : a; }
   static long long identity(Ctx) { return 0; }
 };
 struct FarOp {
   using Ctx = std::pair<long long, long long>;
-  static constexpr Label kHalf{"qh.far.half"}, kAbsorb{"qh.far.absorb"}, kReduce{"qh.far.reduce"}, kCell{"qh.far.cell"};
+  static constexpr Label kHalf{"qh.far.half"}, kAbsorb{"qh.far.absorb"}, kReduce{"qh.far.reduce"};
   static long long combine(Ctx ab, long long p, long long q) { return farther(ab, p, q); }
   static long long identity(Ctx) { return 0; }
 };
@@ -130,24 +130,50 @@ Root* sa_quickhull(Runtime& rt, Root* in) {
   });
 }
 
-namespace {
+// ---- the static twin: the same algorithm with its own arithmetic (no code shared with the
+// self-adjusting program's orient/farther, so a bug in one is not mirrored in the other) ----------
+namespace twin {
+struct Pt {
+  long long x, y;
+};
+Pt at(long long p) { return Pt{p >> 32, static_cast<std::int32_t>(static_cast<std::uint32_t>(p))}; }
+// Twice the signed area of (a, b, c), as the cross product (b − a) × (c − a); > 0 counterclockwise.
+// Exact in long long: |coordinates| < 2^29, so differences < 2^30 and products < 2^61.
+long long cross(long long a, long long b, long long c) {
+  Pt A = at(a), B = at(b), C = at(c);
+  return (B.x - A.x) * (C.y - A.y) - (B.y - A.y) * (C.x - A.x);
+}
+bool before(long long p, long long q) {  // lexicographic (x, then y)
+  Pt P = at(p), Q = at(q);
+  return P.x != Q.x ? P.x < Q.x : P.y < Q.y;
+}
+// Farthest right of a→b: the larger distance, then the larger projection on b − a, then the
+// lexicographically smaller point (the same tie-breaking rule, derived separately).
+long long farther(long long a, long long b, long long p, long long q) {
+  long long dp = cross(a, b, p), dq = cross(a, b, q);  // right of a→b: negative
+  if (dp != dq) return dp < dq ? p : q;
+  Pt A = at(a), B = at(b), P = at(p), Q = at(q);
+  long long ex = B.x - A.x, ey = B.y - A.y;
+  long long sp = (P.x - A.x) * ex + (P.y - A.y) * ey, sq = (Q.x - A.x) * ex + (Q.y - A.y) * ey;
+  if (sp != sq) return sp > sq ? p : q;
+  return before(q, p) ? q : p;
+}
 std::vector<long long> right_of(const std::vector<long long>& s, long long a, long long b) {
   std::vector<long long> r;
   for (long long p : s)
-    if (RightOf::keep({a, b}, p)) r.push_back(p);
+    if (cross(a, b, p) < 0) r.push_back(p);
   return r;
 }
-
-void static_side(const std::vector<long long>& s, long long a, long long b, std::vector<long long>& out) {
+void side(const std::vector<long long>& s, long long a, long long b, std::vector<long long>& out) {
   if (s.empty()) return;
   long long f = s[0];
-  for (std::size_t i = 1; i < s.size(); ++i) f = farther({a, b}, f, s[i]);
+  for (std::size_t i = 1; i < s.size(); ++i) f = farther(a, b, f, s[i]);
   std::vector<long long> s1 = right_of(s, a, f), s2 = right_of(s, f, b);
-  static_side(s1, a, f, out);
+  side(s1, a, f, out);
   out.push_back(f);
-  static_side(s2, f, b, out);
+  side(s2, f, b, out);
 }
-}  // namespace
+}  // namespace twin
 
 std::vector<long long> static_quickhull(const SCell* l) {
   std::vector<long long> pts;
@@ -155,14 +181,14 @@ std::vector<long long> static_quickhull(const SCell* l) {
   if (pts.empty()) return {};
   long long a = pts[0], b = pts[0];
   for (long long p : pts) {
-    a = MinOp::combine(0, a, p);
-    b = MaxOp::combine(0, b, p);
+    if (twin::before(p, a)) a = p;
+    if (twin::before(b, p)) b = p;
   }
   if (a == b) return {a};
-  std::vector<long long> lower = right_of(pts, a, b), upper = right_of(pts, b, a), out{a};
-  static_side(lower, a, b, out);
+  std::vector<long long> lower = twin::right_of(pts, a, b), upper = twin::right_of(pts, b, a), out{a};
+  twin::side(lower, a, b, out);
   out.push_back(b);
-  static_side(upper, b, a, out);
+  twin::side(upper, b, a, out);
   return out;
 }
 

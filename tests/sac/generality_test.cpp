@@ -1,0 +1,356 @@
+// The runtime features the Appendix A.2 hull needs (issue 8 §1), one deterministic scenario each,
+// checked against hand-derived values and from-scratch runs: certificates created in a run, undo
+// hook identity and order, destination-passing memo, a write that moves earlier, fresh
+// allocations, full-key allocation reuse, values in the signature.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "exact/error.hpp"
+#include "sac/runtime.hpp"
+#include "sacprograms/generality.hpp"
+
+using namespace kmr::sac;
+
+namespace {
+
+constexpr Label kIn{"in"}, kOut{"out"}, kCert{"cert"}, kHook{"hook"}, kBox{"box"}, kG{"g"}, kCell{"cell"};
+
+template <class F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const kmr::ContractError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// §1 item 1: a certificate allocated inside the run under a key, set by its owner between runs.
+struct CertProgram {
+  Runtime rt;
+  Mod<int>* n;
+  std::map<int, bool> truth;           // the owner's
+  std::map<int, Mod<bool>*> certs;     // the owner's handles (last created)
+  Mod<int>* out = nullptr;
+  explicit CertProgram(int count, std::map<int, bool> t = {}) : n(rt.input<int>(kIn, 1, count)), truth(std::move(t)) {
+    out = rt.run([this] {
+      auto* o = rt.alloc<int>(kOut);
+      rt.read(n, [this, o](int k) {
+        // certificates for 0..k-1, each read; the output is the number that hold
+        std::vector<Mod<bool>*> cs;
+        for (int i = 0; i < k; ++i) {
+          Mod<bool>* c = rt.traceable<bool>(kCert, truth.count(i) ? truth[i] : true, i);
+          certs[i] = c;
+          cs.push_back(c);
+        }
+        this->count(cs, 0, 0, o);
+      });
+      return o;
+    });
+  }
+  void count(std::vector<Mod<bool>*> cs, std::size_t i, int acc, Mod<int>* o) {
+    if (i == cs.size()) {
+      rt.write(o, acc);
+      return;
+    }
+    rt.read(cs[i], [this, cs, i, acc, o](bool b) { count(cs, i + 1, acc + (b ? 1 : 0), o); });
+  }
+  void set(int i, bool v) {
+    truth[i] = v;
+    rt.change(certs.at(i), v);
+  }
+};
+
+TEST(SacGenerality, S1_3_CertificateCreatedInRunIsReusedAndSetByItsOwner) {
+  RecordProperty("claim", "S1.3.3-traceable-undo");
+  CertProgram p(3);
+  EXPECT_EQ(p.rt.deref(p.out), 3);
+  Mod<bool>* c1 = p.certs.at(1);
+  p.set(1, false);
+  p.rt.propagate();
+  EXPECT_EQ(p.rt.deref(p.out), 2);
+  // Re-executing the creating read (n changes) reuses the certificates by key, with the owner's value.
+  p.rt.change(p.n, 4);
+  p.rt.propagate();
+  EXPECT_EQ(p.certs.at(1), c1) << "same key inside the re-executed interval: same traceable";
+  EXPECT_FALSE(p.rt.deref(c1));
+  EXPECT_EQ(p.rt.deref(p.out), 3);
+  EXPECT_GE(p.rt.stats().allocs_reused, 3u);
+  CertProgram fresh(4, p.truth);
+  EXPECT_EQ(p.rt.signature(), fresh.rt.signature());
+  EXPECT_EQ(p.rt.stats().live_mods, fresh.rt.stats().live_mods);
+  // The value is part of the signature: a stale certificate would show.
+  CertProgram other(4);
+  EXPECT_NE(p.rt.signature(), other.rt.signature());
+}
+
+TEST(SacGenerality, MisuseWritingATraceableInsideARun) {
+  Runtime rt;
+  std::string e = error_of([&] {
+    rt.run([&] {
+      auto* c = rt.traceable<bool>(kCert, true, 1);
+      rt.write(c, false);
+      return 0;
+    });
+  });
+  EXPECT_NE(e.find("its owner sets it"), std::string::npos) << e;
+}
+
+TEST(SacGenerality, TraceableOutsideARunIsAnInput) {
+  Runtime rt;
+  Traceable<int> t(rt, kCert, 5, 7);
+  EXPECT_EQ(rt.stats().input_mods, 1u);
+  Mod<int>* inside = nullptr;
+  rt.run([&] {
+    Traceable<int> u(rt, kCert, 6, 8);  // inside a run: keyed, owned by the trace
+    inside = u.mod();
+    return 0;
+  });
+  EXPECT_EQ(rt.stats().input_mods, 1u);
+  EXPECT_EQ(rt.stats().live_mods, 1u);
+  EXPECT_EQ(rt.deref(inside), 8);
+  EXPECT_EQ(t.get(), 7);
+}
+
+// §1 item 2: the replacement registers before the predecessor's hook runs; identity keeps it.
+TEST(SacGenerality, S1_3_CertificateRecreatedUnderSameKeySurvivesDiscardOfItsPredecessor) {
+  RecordProperty("claim", "S1.3.3-traceable-undo");
+  Runtime rt;
+  auto* x = rt.input<int>(kIn, 1, 0);
+  struct Reg {
+    Mod<bool>* cert;
+    HookId hook;
+  };
+  std::map<int, Reg> registry;  // the simulator's, by certificate name
+  std::vector<std::string> events;
+  rt.run([&] {
+    rt.read(x, [&](int v) {
+      Mod<bool>* c = rt.traceable<bool>(kCert, true, 7);
+      HookId id = rt.on_discard(kHook, [&registry, &events](HookId self) {
+        events.push_back("undo#" + std::to_string(self));
+        auto r = registry.find(7);
+        if (r != registry.end() && r->second.hook == self) registry.erase(r);
+      });
+      registry[7] = Reg{c, id};
+      events.push_back("register#" + std::to_string(id) + ":" + std::to_string(v));
+    });
+    return 0;
+  });
+  Mod<bool>* first = registry.at(7).cert;
+  rt.change(x, 1);
+  rt.propagate();
+  // Specified order (spec/sac.md): the re-executed code runs first, the discarded hook after it.
+  EXPECT_EQ(events, (std::vector<std::string>{"register#1:0", "register#2:1", "undo#1"}));
+  ASSERT_EQ(registry.count(7), 1u) << "the re-created certificate must survive its predecessor's hook";
+  EXPECT_EQ(registry.at(7).hook, 2u);
+  EXPECT_EQ(registry.at(7).cert, first);
+  rt.reset();
+  EXPECT_EQ(registry.count(7), 0u);
+}
+
+TEST(SacGenerality, S1_3_HooksOfDiscardedTraceRunInTimeOrder) {
+  RecordProperty("claim", "S1.3.3-traceable-undo");
+  Runtime rt;
+  auto* x = rt.input<int>(kIn, 1, 4);
+  std::vector<int> undone;
+  rt.run([&] {
+    rt.read(x, [&](int n) {
+      for (int i = 0; i < n; ++i) rt.on_discard(kHook, [&undone, i, n] { undone.push_back(n * 10 + i); });
+    });
+    return 0;
+  });
+  rt.change(x, 2);
+  rt.propagate();
+  EXPECT_EQ(undone, (std::vector<int>{40, 41, 42, 43}));
+}
+
+// §1 item 3: the memoized call's result depends on a read inside it.
+TEST(SacGenerality, S1_3_DestinationMemoResultFollowsItsReads) {
+  RecordProperty("claim", "S1.3.2-monotone-reuse");
+  Runtime rt;
+  std::vector<Mod<int>*> a;
+  for (int i = 0; i < 4; ++i) a.push_back(rt.input<int>(kIn, i, 0));
+  int bodies = 0;
+  // first(i) = the first nonzero a[j], j ≥ i (or -1), by destination-passing memo.
+  std::function<Mod<int>*(int)> first = [&](int i) -> Mod<int>* {
+    return rt.memo_box<int>(kBox, i, [&, i](Mod<int>* dest) {
+      ++bodies;
+      if (i == 4) {
+        rt.write(dest, -1);
+        return;
+      }
+      rt.read(a[i], [&, i, dest](int v) {
+        if (v) rt.write(dest, v);
+        else rt.read(first(i + 1), [&rt, dest](int w) { rt.write(dest, w); });
+      });
+    });
+  };
+  auto* g = rt.input<int>(kIn, 99, 0);
+  Mod<int>* out = rt.run([&] {
+    auto* o = rt.alloc<int>(kOut);
+    rt.read(g, [&, o](int) { rt.read(first(0), [&rt, o](int w) { rt.write(o, w); }); });
+    return o;
+  });
+  EXPECT_EQ(rt.deref(out), -1);
+  EXPECT_EQ(bodies, 5);
+  rt.change(a[2], 7);  // the read inside first(2) re-runs; first(0) and first(1) are not re-called
+  rt.propagate();
+  EXPECT_EQ(rt.deref(out), 7);
+  EXPECT_EQ(bodies, 5);
+  rt.change(g, 1);  // re-executes the caller: first(0) is reused, with its current result
+  rt.propagate();
+  EXPECT_EQ(rt.deref(out), 7);
+  EXPECT_EQ(rt.stats().memo_hits, 1u);
+  EXPECT_EQ(bodies, 5);
+}
+
+// §1 item 4: a write that moves earlier than the write it replaces (CEAL accepts it).
+struct TwoPass {
+  Runtime rt;
+  Mod<int>* x;
+  Mod<int>* out = nullptr;
+  explicit TwoPass(int xv) : x(rt.input<int>(kIn, 1, xv)) {
+    out = rt.run([this] {
+      auto* o = rt.alloc<int>(kOut);
+      auto* found = rt.alloc<bool>(kOut, 2);
+      rt.read(x, [this, o, found](int v) {
+        if (v > 0) rt.write(o, v);
+        rt.write(found, v > 0);
+      });
+      rt.read(found, [this, o](bool f) {
+        if (!f) rt.write(o, -100);  // the later write, when the first pass wrote nothing
+      });
+      return o;
+    });
+  }
+};
+
+TEST(SacGenerality, S1_3_WriteMovingEarlierIsAcceptedAndTheLaterOneRemoved) {
+  RecordProperty("claim", "S1.3.1-change-propagation");
+  TwoPass p(0);
+  EXPECT_EQ(p.rt.deref(p.out), -100);
+  p.rt.change(p.x, 5);
+  p.rt.propagate();
+  EXPECT_EQ(p.rt.deref(p.out), 5);
+  EXPECT_EQ(p.rt.stats().writes_moved_earlier, 1u);
+  TwoPass fresh5(5);
+  EXPECT_EQ(p.rt.signature(), fresh5.rt.signature());
+  EXPECT_EQ(p.rt.stats().trace_nodes, fresh5.rt.stats().trace_nodes);
+  p.rt.change(p.x, -3);  // and back: the write moves later again
+  p.rt.propagate();
+  EXPECT_EQ(p.rt.deref(p.out), -100);
+  TwoPass fresh0(-3);
+  EXPECT_EQ(p.rt.signature(), fresh0.rt.signature());
+}
+
+TEST(SacGenerality, MisuseAMovedWriteWhoseLaterWriteStays) {
+  // Inconsistent: the later write does not depend on what the earlier pass did.
+  Runtime rt;
+  auto* x = rt.input<int>(kIn, 1, 0);
+  auto* y = rt.input<int>(kIn, 2, 0);
+  rt.run([&] {
+    auto* o = rt.alloc<int>(kOut);
+    rt.read(x, [&rt, o](int v) {
+      if (v > 0) rt.write(o, v);
+    });
+    rt.read(y, [&rt, o](int) { rt.write(o, -1); });
+    return 0;
+  });
+  rt.change(x, 3);
+  std::string e = error_of([&] { rt.propagate(); });
+  EXPECT_NE(e.find("moved earlier but the later write is still in the trace"), std::string::npos) << e;
+}
+
+// §1 item 5: fresh allocations, several per execution, never reused, named canonically.
+TEST(SacGenerality, S1_3_FreshAllocationsAreCanonicalAndNeverReused) {
+  RecordProperty("claim", "S1.3.1-change-propagation");
+  auto build = [](Runtime& rt, Mod<int>* in, std::vector<Mod<int>*>* made) {
+    rt.run([&rt, in, made] {
+      rt.read(in, [&rt, made](int n) {
+        for (int i = 0; i < n; ++i) made->push_back(rt.put<int>(kBox, i * i));
+      });
+      return 0;
+    });
+  };
+  Runtime rt;
+  auto* in = rt.input<int>(kIn, 1, 3);
+  std::vector<Mod<int>*> made;
+  build(rt, in, &made);
+  EXPECT_EQ(rt.stats().fresh_allocs, 3u);
+  rt.change(in, 4);
+  rt.propagate();
+  ASSERT_EQ(made.size(), 7u);
+  EXPECT_NE(made[3], made[0]) << "fresh allocations are not reused";
+  EXPECT_EQ(rt.deref(made[6]), 9);
+  EXPECT_EQ(rt.stats().live_mods, 4u);
+  EXPECT_EQ(rt.stats().allocs_reused, 0u);
+  Runtime fresh;
+  auto* in2 = fresh.input<int>(kIn, 1, 4);
+  std::vector<Mod<int>*> made2;
+  build(fresh, in2, &made2);
+  EXPECT_EQ(rt.signature(), fresh.signature());
+  EXPECT_NE(rt.signature().find("F"), std::string::npos);
+}
+
+// §1 item 5: allocation reuse compares the full key, not its hash.
+struct Colliding {
+  int v;
+  bool operator==(const Colliding&) const = default;
+};
+std::uint64_t canon_key(const Colliding&) { return 42; }  // every key has the same hash
+
+TEST(SacGenerality, S1_3_AllocationReuseComparesTheFullKey) {
+  RecordProperty("claim", "S1.3.1-change-propagation");
+  Runtime rt;
+  auto* in = rt.input<int>(kIn, 1, 0);
+  std::vector<std::pair<Mod<int>*, Mod<int>*>> seen;
+  rt.run([&] {
+    rt.read(in, [&](int v) {
+      Mod<int>* a = rt.alloc<int>(kCell, Colliding{1});  // same hash, different keys: both allowed
+      Mod<int>* b = rt.alloc<int>(kCell, Colliding{2});
+      rt.write(a, v);
+      rt.write(b, v + 1);
+      seen.emplace_back(a, b);
+    });
+    return 0;
+  });
+  rt.change(in, 5);
+  rt.propagate();
+  ASSERT_EQ(seen.size(), 2u);
+  EXPECT_EQ(seen[1].first, seen[0].first) << "key {1} gets key {1}'s modifiable";
+  EXPECT_EQ(seen[1].second, seen[0].second);
+  EXPECT_EQ(rt.deref(seen[1].first), 5);
+  EXPECT_EQ(rt.deref(seen[1].second), 6);
+  std::string e = error_of([&] {
+    Runtime r2;
+    r2.run([&] {
+      r2.alloc<int>(kCell, Colliding{3});
+      r2.alloc<int>(kCell, Colliding{3});
+      return 0;
+    });
+  });
+  EXPECT_NE(e.find("used twice in one execution"), std::string::npos) << e;
+}
+
+// §1 item 6: written values and memo results are in the signature.
+TEST(SacGenerality, S1_3_SignatureIncludesWrittenValuesAndMemoResults) {
+  RecordProperty("claim", "S1.3.1-change-propagation");
+  auto sig = [](int written, int result) {
+    Runtime rt;
+    rt.run([&] {
+      auto* o = rt.alloc<int>(kOut);
+      rt.write(o, written);
+      rt.memo<int>(kG, 1, [result] { return result; });
+      return 0;
+    });
+    return rt.signature();
+  };
+  EXPECT_EQ(sig(1, 2), sig(1, 2));
+  EXPECT_NE(sig(1, 2), sig(3, 2)) << "a different written value under the same name";
+  EXPECT_NE(sig(1, 2), sig(1, 4)) << "a different memo result under the same key";
+}
+
+}  // namespace
