@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
   std::cout << "{\"n\": " << x.size() << ", \"initial_s\": " << initial << ", \"events\": " << c.events
             << ", \"batches\": " << c.batches << ", \"simulated_until\": \"" << sim.now().to_decimal() << "\""
             << ", \"run_s\": " << run << ", \"events_per_s\": " << (run > 0 ? c.events / run : 0)
-            << ", \"max_batch\": " << c.max_batch << ", \"batch_sizes\": {";
+            << ", \"swaps\": " << sort.swaps() << ", \"max_batch\": " << c.max_batch << ", \"batch_sizes\": {";
   bool first = true;
   for (auto& [size, count] : c.batch_sizes) {
     std::cout << (first ? "" : ", ") << "\"" << size << "\": " << count;

@@ -1,72 +1,268 @@
 #include "kinetic/motion_simulator.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
 #include "exact/error.hpp"
 
 namespace kmr::kinetic {
 
-MotionSimulator::MotionSimulator(int lattice_bits, Dyadic horizon) : bits_(lattice_bits), horizon_(std::move(horizon)) {
-  if (lattice_bits < 0 || lattice_bits > 62) throw InputError("lattice bits must be in [0, 62]");
-  if (horizon_.sign() < 0) throw InputError("the horizon must be >= 0");
+namespace {
+
+using i128 = __int128;
+constexpr std::int64_t kMachineLimit = std::int64_t{1} << 62;  // |c| and lattice indices below this
+
+bool fits_machine(const Integer& c) { return exact::bit_length(c) <= 61; }  // |c| < 2^61 ≤ 2^62
+
+int sign_of(i128 v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
+
+// floor(num / den) for den ≠ 0, exactly.
+i128 floor_div(i128 num, i128 den) {
+  if (den < 0) num = -num, den = -den;
+  i128 q = num / den;
+  if (q * den > num) q -= 1;
+  return q;
 }
 
-CertificateId MotionSimulator::add(const Polynomial& p) {
-  if (p.is_zero()) throw InputError("identically zero certificate polynomial: its outcome is undefined");
+}  // namespace
+
+MotionSimulator::MotionSimulator(int lattice_bits, Dyadic horizon)
+    : MotionSimulator(lattice_bits, std::move(horizon), SimulatorOptions{}) {}
+
+MotionSimulator::MotionSimulator(int lattice_bits, Dyadic horizon, SimulatorOptions options)
+    : bits_(lattice_bits), horizon_(std::move(horizon)), options_(options) {
+  if (lattice_bits < 0 || lattice_bits > 62) throw InputError("lattice bits must be in [0, 62]");
+  if (horizon_.sign() < 0) throw InputError("the horizon must be >= 0");
+  // A failure in interval k is processed at (k+1)δ, which must not pass the horizon: k < last.
+  last_k_big_ = horizon_.shifted(bits_).floor();
+  small_lattice_ = last_k_big_ < Integer(kMachineLimit);
+  scale_ = std::ldexp(1.0, bits_);
+  if (small_lattice_) last_k_ = static_cast<std::int64_t>(last_k_big_);
+}
+
+MotionSimulator::Record& MotionSimulator::record(CertificateId id) {
+  KMR_CHECK(id < slot_of_id_.size() && slot_of_id_[id] != kNoRecord, "unknown certificate id");
+  return records_[slot_of_id_[id]];
+}
+const MotionSimulator::Record& MotionSimulator::record(CertificateId id) const {
+  KMR_CHECK(id < slot_of_id_.size() && slot_of_id_[id] != kNoRecord, "unknown certificate id");
+  return records_[slot_of_id_[id]];
+}
+
+CertificateId MotionSimulator::add_record(Record r) {
   CertificateId id = next_id_++;
-  int outcome = poly::sign_before(p, now_);
-  certificates_.emplace(id, Certificate{p, poly::LatticeRootSolver(p, bits_), outcome, std::nullopt});
-  schedule(id);
+  std::uint32_t slot;
+  if (!free_slots_.empty()) {
+    slot = free_slots_.back();
+    free_slots_.pop_back();
+    records_[slot] = std::move(r);
+  } else {
+    slot = static_cast<std::uint32_t>(records_.size());
+    records_.push_back(std::move(r));
+  }
+  slot_of_id_.push_back(slot);  // ids are sequential: slot_of_id_[id]
+  schedule(records_[slot], id);
   ++counters_.created;
   return id;
 }
 
+CertificateId MotionSimulator::add(const Polynomial& p) {
+  if (p.is_zero()) throw InputError("identically zero certificate polynomial: its outcome is undefined");
+  if (options_.machine_fast_path && small_lattice_ && p.degree() <= 1 &&
+      std::all_of(p.coefficients().begin(), p.coefficients().end(), fits_machine))
+    return add_linear(static_cast<std::int64_t>(p[0]), p.degree() == 1 ? static_cast<std::int64_t>(p[1]) : 0);
+  Record r;
+  int outcome = poly::sign_before(p, now_);
+  r.exact = std::make_unique<Certificate>(Certificate{p, poly::LatticeRootSolver(p, bits_), outcome, std::nullopt});
+  r.outcome = outcome;
+  ++counters_.exact_certificates;
+  return add_record(std::move(r));
+}
+
+CertificateId MotionSimulator::add_linear(std::int64_t c0, std::int64_t c1) {
+  if (c0 == 0 && c1 == 0) throw InputError("identically zero certificate polynomial: its outcome is undefined");
+  auto small = [](std::int64_t c) { return c > -kMachineLimit && c < kMachineLimit; };
+  if (!options_.machine_fast_path || !small_lattice_ || !small(c0) || !small(c1))
+    return add(Polynomial(std::vector<Integer>{Integer(c0), Integer(c1)}));
+  Record r;
+  r.machine = true;
+  r.c0 = c0, r.c1 = c1;
+  r.outcome = machine_sign_before(r, now_k_);
+  return add_record(std::move(r));
+}
+
 void MotionSimulator::remove(CertificateId id) {
-  unschedule(id);
-  KMR_CHECK(certificates_.erase(id) == 1, "removing an unknown certificate");
+  Record& r = record(id);
+  if (r.scheduled) {
+    if (small_lattice_)
+      ++stale_entries_;  // its heap entry is skipped when it surfaces
+    else
+      queue_.erase({r.exact->failure.value(), id});
+  }
+  r.scheduled = false;
+  r.exact.reset();
+  free_slots_.push_back(slot_of_id_[id]);
+  slot_of_id_[id] = kNoRecord;
+  views_.erase(id);
   ++counters_.destroyed;
+  if (stale_entries_ > 1024 && stale_entries_ * 2 > static_cast<long long>(heap_.size())) compact_heap();
 }
 
 const Certificate& MotionSimulator::certificate(CertificateId id) const {
-  auto it = certificates_.find(id);
-  KMR_CHECK(it != certificates_.end(), "unknown certificate id");
-  return it->second;
+  const Record& r = record(id);
+  if (!r.machine) return *r.exact;
+  // A view built on demand (off the hot path): the same polynomial and solver the exact path uses.
+  Polynomial p(std::vector<Integer>{Integer(r.c0), Integer(r.c1)});
+  std::optional<Integer> failure;
+  if (r.scheduled) failure = Integer(r.failure);
+  poly::LatticeRootSolver solver(p, bits_);
+  views_.insert_or_assign(id, Certificate{std::move(p), std::move(solver), r.outcome, std::move(failure)});
+  return views_.at(id);
 }
 
-void MotionSimulator::schedule(CertificateId id) {
-  Certificate& c = certificates_.at(id);
-  // A failure in interval k is processed at (k+1)δ, which must not pass the horizon.
-  Dyadic last_end = lattice_point(horizon_.shifted(bits_).floor());  // the last lattice point ≤ horizon
-  c.failure = c.solver.next_failure_after(now_, last_end);
-  if (c.failure) queue_.emplace(*c.failure, id);
+int MotionSimulator::outcome(CertificateId id) const { return record(id).outcome; }
+
+std::optional<std::int64_t> MotionSimulator::now_index() const {
+  if (!small_lattice_) return std::nullopt;
+  return now_k_;
 }
 
-void MotionSimulator::unschedule(CertificateId id) {
-  auto it = certificates_.find(id);
-  KMR_CHECK(it != certificates_.end(), "unknown certificate id");
-  if (it->second.failure) queue_.erase({*it->second.failure, id});
-  it->second.failure.reset();
+int MotionSimulator::machine_sign_before(const Record& r, std::int64_t k) {
+  // 2^b·p(kδ) = c0·2^b + c1·k: |c0·2^b| < 2^124 and |c1·k| < 2^124, so the sum fits __int128.
+  ++counters_.machine_sign_evaluations;
+  int s = sign_of((static_cast<i128>(r.c0) << bits_) + static_cast<i128>(r.c1) * k);
+  if (s != 0) return s;
+  return r.c1 > 0 ? -1 : 1;  // p(kδ) = 0: the sign of p' = c1 ≠ 0, times (−1)^1 (§2.1)
+}
+
+std::optional<std::int64_t> MotionSimulator::machine_failure(const Record& r) {
+  if (r.c1 == 0) return std::nullopt;  // a nonzero constant never fails
+  // The one root −c0/c1 lies in interval k = floor(−c0·2^b / c1); it is a failure iff now ≤ kδ and
+  // (k+1)δ ≤ the last lattice point before the horizon.
+  constexpr std::int64_t two53 = std::int64_t{1} << 53;
+  std::optional<std::int64_t> k;
+  if (r.c0 >= -two53 && r.c0 <= two53 && r.c1 >= -two53 && r.c1 <= two53) {
+    // Double filter: c0, c1 and c0·2^b are exact doubles; q̃ = fl(−c0·2^b / c1) is one correctly
+    // rounded division, |q̃ − q| ≤ 2^−53·|q| ≤ 2^−52·|q̃|. If both distances from q̃ to the integers
+    // around it exceed 2^−50·|q̃| (each computed with one rounding, relative error ≤ 2^−53), then q
+    // lies strictly between them and floor(q) = floor(q̃). Roots on (or within rounding of) a lattice
+    // point fail the test (q̃ − ⌊q̃⌋ = 0 ≤ bound) and go to the exact division.
+    double q = (-static_cast<double>(r.c0) * scale_) / static_cast<double>(r.c1);  // scale_ = 2^b exactly
+    if (std::fabs(q) < 0x1p52) {
+      double f = std::floor(q);
+      double bound = std::fabs(q) * 0x1p-50;  // exact: |q| ≥ 2^−62 when c0 ≠ 0, and 0 when c0 = 0
+      if (q - f > bound && (f + 1.0) - q > bound) {
+        ++counters_.filter_decided;
+        k = static_cast<std::int64_t>(f);
+      }
+    }
+  }
+  if (!k) {
+    ++counters_.filter_fallbacks;
+    i128 exact = floor_div(-(static_cast<i128>(r.c0) << bits_), r.c1);
+    if (exact < now_k_ || exact >= last_k_) return std::nullopt;
+    k = static_cast<std::int64_t>(exact);
+  }
+  if (*k < now_k_ || *k >= last_k_) return std::nullopt;
+  return k;
+}
+
+void MotionSimulator::schedule(Record& r, CertificateId id) {
+  r.scheduled = false;
+  if (r.machine) {
+    if (auto k = machine_failure(r)) {
+      r.failure = *k;
+      r.scheduled = true;
+    }
+  } else {
+    Certificate& c = *r.exact;
+    long long before = c.solver.sturm_queries;
+    c.failure = c.solver.next_failure_after(now_, lattice_point(last_k_big_));
+    counters_.sturm_queries += c.solver.sturm_queries - before;
+    if (c.failure) {
+      r.scheduled = true;
+      if (small_lattice_)
+        r.failure = static_cast<std::int64_t>(*c.failure);
+      else
+        queue_.emplace(*c.failure, id);
+    }
+  }
+  if (r.scheduled && small_lattice_) {
+    heap_.push_back({r.failure, id});
+    std::push_heap(heap_.begin(), heap_.end(), std::greater<>{});
+  }
+}
+
+bool MotionSimulator::entry_live(const Entry& e) const {
+  if (e.id >= slot_of_id_.size() || slot_of_id_[e.id] == kNoRecord) return false;
+  const Record& r = records_[slot_of_id_[e.id]];
+  return r.scheduled && r.failure == e.k;  // a record is scheduled at most once per interval
+}
+
+void MotionSimulator::compact_heap() {
+  std::erase_if(heap_, [&](const Entry& e) { return !entry_live(e); });
+  std::make_heap(heap_.begin(), heap_.end(), std::greater<>{});
+  stale_entries_ = 0;
 }
 
 std::optional<Integer> MotionSimulator::next_failure_interval() const {
-  if (queue_.empty()) return std::nullopt;
-  return queue_.begin()->first;
+  if (!small_lattice_) {
+    if (queue_.empty()) return std::nullopt;
+    return queue_.begin()->first;
+  }
+  // The heap's top may be stale; the earliest live entry is found without changing the heap.
+  if (heap_.empty()) return std::nullopt;
+  if (entry_live(heap_.front())) return Integer(heap_.front().k);
+  std::optional<std::int64_t> best;
+  for (const Entry& e : heap_)
+    if (entry_live(e) && (!best || e.k < *best)) best = e.k;
+  if (!best) return std::nullopt;
+  return Integer(*best);
 }
 
 std::optional<std::vector<CertificateId>> MotionSimulator::next_batch(const Dyadic& until) {
-  if (queue_.empty()) return std::nullopt;
-  Integer k = queue_.begin()->first;
-  if (lattice_point(k + 1) > until) return std::nullopt;
   std::vector<CertificateId> batch;
-  while (!queue_.empty() && queue_.begin()->first == k) {
-    batch.push_back(queue_.begin()->second);
-    queue_.erase(queue_.begin());
+  if (small_lattice_) {
+    auto pop = [&] {
+      std::pop_heap(heap_.begin(), heap_.end(), std::greater<>{});
+      heap_.pop_back();
+    };
+    while (!heap_.empty() && !entry_live(heap_.front())) pop(), --stale_entries_;
+    if (heap_.empty()) return std::nullopt;
+    std::int64_t k = heap_.front().k;
+    // (k+1)δ > until ⇔ k + 1 > floor(until·2^b): compared as Integers once per batch.
+    if (Integer(k) + 1 > until.shifted(bits_).floor()) return std::nullopt;
+    while (!heap_.empty() && heap_.front().k == k) {
+      if (entry_live(heap_.front())) batch.push_back(heap_.front().id);
+      else --stale_entries_;
+      pop();
+    }
+    now_k_ = k + 1;
+    now_ = lattice_point(Integer(now_k_));
+  } else {
+    if (queue_.empty()) return std::nullopt;
+    Integer k = queue_.begin()->first;
+    if (lattice_point(k + 1) > until) return std::nullopt;
+    while (!queue_.empty() && queue_.begin()->first == k) {
+      batch.push_back(queue_.begin()->second);
+      queue_.erase(queue_.begin());
+    }
+    now_ = lattice_point(k + 1);
   }
-  now_ = lattice_point(k + 1);
+  if (stale_entries_ < 0) stale_entries_ = 0;
   for (CertificateId id : batch) {
-    Certificate& c = certificates_.at(id);
-    c.failure.reset();
-    c.outcome = -c.outcome;
-    KMR_CHECK(c.outcome == poly::sign_before(c.polynomial, now_), "a popped failure did not change the sign");
-    schedule(id);
+    Record& r = record(id);
+    r.scheduled = false;
+    r.outcome = -r.outcome;
+    if (r.machine) {
+      KMR_CHECK(r.outcome == machine_sign_before(r, now_k_), "a popped failure did not change the sign");
+    } else {
+      r.exact->failure.reset();
+      r.exact->outcome = r.outcome;
+      KMR_CHECK(r.outcome == poly::sign_before(r.exact->polynomial, now_), "a popped failure did not change the sign");
+    }
+    schedule(r, id);
   }
   auto size = static_cast<long long>(batch.size());
   counters_.events += size;

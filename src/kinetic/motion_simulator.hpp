@@ -13,8 +13,18 @@
 //  * add() refuses an identically-zero certificate polynomial with an InputError.
 //  * Results do not depend on anything but the certificates added and their order of addition
 //    (ids are assigned sequentially; ties in the queue are broken by id).
+//  * The machine fast path changes no decision, only its cost (spec/kinetic.md): a certificate of
+//    degree ≤ 1 with coefficients |c| < 2^62 on a lattice whose horizon index is < 2^62 is kept as
+//    two int64 coefficients. Its signs at lattice points are exact in __int128; its failure
+//    interval floor(−c0·2^b / c1) is taken from a double-precision quotient q̃ when
+//    min(q̃ − ⌊q̃⌋, ⌊q̃⌋ + 1 − q̃) > 2^−50·|q̃| (|c0|, |c1| ≤ 2^53, |q̃| < 2^52: the true quotient is within
+//    2^−52·|q̃| of q̃, so it lies strictly inside (⌊q̃⌋, ⌊q̃⌋ + 1)), and otherwise from an exact
+//    __int128 floor division. Everything else takes the exact path (Polynomial + LatticeRootSolver).
+//    The queue is a binary heap of (lattice index, id) with lazy deletion; no GMP number is
+//    allocated per event on the fast path.
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <unordered_map>
@@ -44,22 +54,38 @@ struct SimulatorCounters {
   long long created = 0, destroyed = 0;
   std::map<long long, long long> batch_sizes;  // size → number of batches of that size
   long long live() const { return created - destroyed; }
+  // Root-solver work (spec/kinetic.md): failure intervals decided by the double filter, by the
+  // exact __int128 fallback, and certificates on the exact (GMP, Sturm) path with their Sturm
+  // queries; sign evaluations at lattice points on the machine path (outcomes and checks).
+  long long filter_decided = 0, filter_fallbacks = 0, exact_certificates = 0;
+  long long sturm_queries = 0, machine_sign_evaluations = 0;
+};
+
+struct SimulatorOptions {
+  bool machine_fast_path = true;  // false: every certificate on the exact path (for comparisons)
 };
 
 class MotionSimulator {
  public:
   // δ = 2^−lattice_bits; failures are scheduled only in intervals [kδ, (k+1)δ) with (k+1)δ ≤ horizon.
   MotionSimulator(int lattice_bits, Dyadic horizon);
+  MotionSimulator(int lattice_bits, Dyadic horizon, SimulatorOptions options);
 
   int lattice_bits() const { return bits_; }
   const Dyadic& now() const { return now_; }
   const Dyadic& horizon() const { return horizon_; }
+  const SimulatorOptions& options() const { return options_; }
   Dyadic lattice_point(const Integer& k) const { return Dyadic(k, -bits_); }
 
   CertificateId add(const Polynomial& p);
+  // The certificate c0 + c1·t, without building a Polynomial (the fast path when it applies).
+  CertificateId add_linear(std::int64_t c0, std::int64_t c1);
   void remove(CertificateId id);
+  // A view of the certificate; the reference is valid until the next call on the simulator.
   const Certificate& certificate(CertificateId id) const;
-  int outcome(CertificateId id) const { return certificate(id).outcome; }
+  int outcome(CertificateId id) const;
+  // The lattice index of now() when the fast path's lattice applies (horizon index < 2^62).
+  std::optional<std::int64_t> now_index() const;
 
   // The next batch with (k+1)δ ≤ until, or nothing (now() unchanged) if there is none.
   std::optional<std::vector<CertificateId>> next_batch(const Dyadic& until);
@@ -69,15 +95,46 @@ class MotionSimulator {
   const SimulatorCounters& counters() const { return counters_; }
 
  private:
-  void schedule(CertificateId id);
-  void unschedule(CertificateId id);
+  // One certificate. Machine records hold c0 + c1·t; the others hold the exact Certificate.
+  struct Record {
+    std::int64_t c0 = 0, c1 = 0;
+    std::int64_t failure = 0;          // the scheduled interval, when scheduled and the lattice is small
+    bool machine = false, scheduled = false;
+    int outcome = 0;
+    std::unique_ptr<Certificate> exact;
+  };
+  struct Entry {  // heap entry (failure interval, id); stale once its record is gone or moved
+    std::int64_t k;
+    CertificateId id;
+    friend bool operator>(const Entry& a, const Entry& b) { return a.k != b.k ? a.k > b.k : a.id > b.id; }
+  };
+  static constexpr std::uint32_t kNoRecord = 0xffffffffu;
+
+  CertificateId add_record(Record r);
+  Record& record(CertificateId id);
+  const Record& record(CertificateId id) const;
+  void schedule(Record& r, CertificateId id);
+  int machine_sign_before(const Record& r, std::int64_t k);  // exact sign just before kδ
+  std::optional<std::int64_t> machine_failure(const Record& r);     // interval in [now, last)
+  bool entry_live(const Entry& e) const;
+  void compact_heap();
 
   int bits_;
   Dyadic horizon_;
   Dyadic now_{0};
+  SimulatorOptions options_;
+  bool small_lattice_ = false;        // last_k_ < 2^62: int64 lattice indices and the heap queue
+  std::int64_t now_k_ = 0, last_k_ = 0;
+  double scale_ = 1;                  // 2^bits, for the double filter
+  Integer last_k_big_;                // the last lattice index ≤ horizon
   CertificateId next_id_ = 0;
-  std::unordered_map<CertificateId, Certificate> certificates_;  // lookup only; never iterated
-  std::set<std::pair<Integer, CertificateId>> queue_;            // (failure interval, id)
+  std::vector<std::uint32_t> slot_of_id_;  // id → index into records_, or kNoRecord
+  std::vector<Record> records_;
+  std::vector<std::uint32_t> free_slots_;
+  std::vector<Entry> heap_;                 // min-heap by (k, id); lazy deletion
+  long long stale_entries_ = 0;
+  std::set<std::pair<Integer, CertificateId>> queue_;  // (failure interval, id), huge lattices only
+  mutable std::unordered_map<CertificateId, Certificate> views_;  // certificate() of machine records
   SimulatorCounters counters_;
 };
 
