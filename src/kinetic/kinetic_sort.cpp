@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "exact/error.hpp"
+#include "poly/linear_root.hpp"
 
 namespace kmr::kinetic {
 
@@ -56,10 +57,8 @@ void KineticSort::refresh_now() {
 bool KineticSort::before(std::size_t a, std::size_t b) const {
   if (!machine_) return poly::sign_before(x_[b] - x_[a], sim_.now()) > 0;
   // Sign just before now = kδ of (x0b − x0a) + (vb − va)·t, exactly: 2^b·value fits __int128.
-  std::int64_t c0 = linear_[b].first - linear_[a].first, c1 = linear_[b].second - linear_[a].second;
-  __int128 v = (static_cast<__int128>(c0) << sim_.lattice_bits()) + static_cast<__int128>(c1) * now_k_;
-  if (v != 0) return v > 0;
-  return c1 < 0;  // a root at now: the sign just before is −sign(c1)
+  return poly::linear_sign_before(linear_[b].first - linear_[a].first, linear_[b].second - linear_[a].second,
+                                 sim_.lattice_bits(), now_k_) > 0;
 }
 
 void KineticSort::certify(std::size_t slot) {
@@ -98,9 +97,7 @@ void KineticSort::update(const std::vector<CertificateId>& batch) {
   auto out_of_order = [&](std::size_t k) {
     if (!machine_) return before(order_[k], order_[k - 1]);
     const auto &a = placed_[k - 1], &b = placed_[k];
-    std::int64_t c0 = a.first - b.first, c1 = a.second - b.second;  // x_{k−1} − x_k
-    __int128 v = (static_cast<__int128>(c0) << bits) + static_cast<__int128>(c1) * now;
-    return v != 0 ? v > 0 : c1 < 0;
+    return poly::linear_sign_before(a.first - b.first, a.second - b.second, bits, now) > 0;  // x_{k−1} − x_k
   };
   for (std::size_t s : slots) {
     mark_changed(s);

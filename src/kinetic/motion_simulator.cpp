@@ -5,25 +5,15 @@
 #include <functional>
 
 #include "exact/error.hpp"
+#include "poly/linear_root.hpp"
 
 namespace kmr::kinetic {
 
 namespace {
 
-using i128 = __int128;
 constexpr std::int64_t kMachineLimit = std::int64_t{1} << 62;  // |c| and lattice indices below this
 
 bool fits_machine(const Integer& c) { return exact::bit_length(c) <= 61; }  // |c| < 2^61 ≤ 2^62
-
-int sign_of(i128 v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
-
-// floor(num / den) for den ≠ 0, exactly.
-i128 floor_div(i128 num, i128 den) {
-  if (den < 0) num = -num, den = -den;
-  i128 q = num / den;
-  if (q * den > num) q -= 1;
-  return q;
-}
 
 }  // namespace
 
@@ -129,43 +119,24 @@ std::optional<std::int64_t> MotionSimulator::now_index() const {
 }
 
 int MotionSimulator::machine_sign_before(const Record& r, std::int64_t k) {
-  // 2^b·p(kδ) = c0·2^b + c1·k: |c0·2^b| < 2^124 and |c1·k| < 2^124, so the sum fits __int128.
   ++counters_.machine_sign_evaluations;
-  int s = sign_of((static_cast<i128>(r.c0) << bits_) + static_cast<i128>(r.c1) * k);
-  if (s != 0) return s;
-  return r.c1 > 0 ? -1 : 1;  // p(kδ) = 0: the sign of p' = c1 ≠ 0, times (−1)^1 (§2.1)
+  return poly::linear_sign_before(r.c0, r.c1, bits_, k);
 }
 
 std::optional<std::int64_t> MotionSimulator::machine_failure(const Record& r) {
   if (r.c1 == 0) return std::nullopt;  // a nonzero constant never fails
-  // The one root −c0/c1 lies in interval k = floor(−c0·2^b / c1); it is a failure iff now ≤ kδ and
-  // (k+1)δ ≤ the last lattice point before the horizon.
-  constexpr std::int64_t two53 = std::int64_t{1} << 53;
-  std::optional<std::int64_t> k;
-  if (r.c0 >= -two53 && r.c0 <= two53 && r.c1 >= -two53 && r.c1 <= two53) {
-    // Double filter: c0, c1 and c0·2^b are exact doubles; q̃ = fl(−c0·2^b / c1) is one correctly
-    // rounded division, |q̃ − q| ≤ 2^−53·|q| ≤ 2^−52·|q̃|. If both distances from q̃ to the integers
-    // around it exceed 2^−50·|q̃| (each computed with one rounding, relative error ≤ 2^−53), then q
-    // lies strictly between them and floor(q) = floor(q̃). Roots on (or within rounding of) a lattice
-    // point fail the test (q̃ − ⌊q̃⌋ = 0 ≤ bound) and go to the exact division.
-    double q = (-static_cast<double>(r.c0) * scale_) / static_cast<double>(r.c1);  // scale_ = 2^b exactly
-    if (std::fabs(q) < 0x1p52) {
-      double f = std::floor(q);
-      double bound = std::fabs(q) * 0x1p-50;  // exact: |q| ≥ 2^−62 when c0 ≠ 0, and 0 when c0 = 0
-      if (q - f > bound && (f + 1.0) - q > bound) {
-        ++counters_.filter_decided;
-        k = static_cast<std::int64_t>(f);
-      }
-    }
-  }
-  if (!k) {
+  // The one root −c0/c1 lies in interval k = floor(−c0·2^b / c1) (poly/linear_root.hpp: the double
+  // filter, else exact __int128 division); it is a failure iff now ≤ kδ and k < last.
+  __int128 k;
+  if (auto filtered = poly::linear_root_interval_filtered(r.c0, r.c1, scale_)) {
+    ++counters_.filter_decided;
+    k = *filtered;
+  } else {
     ++counters_.filter_fallbacks;
-    i128 exact = floor_div(-(static_cast<i128>(r.c0) << bits_), r.c1);
-    if (exact < now_k_ || exact >= last_k_) return std::nullopt;
-    k = static_cast<std::int64_t>(exact);
+    k = poly::linear_root_interval_exact(r.c0, r.c1, bits_);
   }
-  if (*k < now_k_ || *k >= last_k_) return std::nullopt;
-  return k;
+  if (k < now_k_ || k >= last_k_) return std::nullopt;
+  return static_cast<std::int64_t>(k);
 }
 
 void MotionSimulator::schedule(Record& r, CertificateId id) {

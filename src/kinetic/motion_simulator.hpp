@@ -16,10 +16,9 @@
 //  * The machine fast path changes no decision, only its cost (spec/kinetic.md): a certificate of
 //    degree ≤ 1 with coefficients |c| < 2^62 on a lattice whose horizon index is < 2^62 is kept as
 //    two int64 coefficients. Its signs at lattice points are exact in __int128; its failure
-//    interval floor(−c0·2^b / c1) is taken from a double-precision quotient q̃ when
-//    min(q̃ − ⌊q̃⌋, ⌊q̃⌋ + 1 − q̃) > 2^−50·|q̃| (|c0|, |c1| ≤ 2^53, |q̃| < 2^52: the true quotient is within
-//    2^−52·|q̃| of q̃, so it lies strictly inside (⌊q̃⌋, ⌊q̃⌋ + 1)), and otherwise from an exact
-//    __int128 floor division. Everything else takes the exact path (Polynomial + LatticeRootSolver).
+//    interval floor(−c0·2^b / c1) comes from the double filter of poly/linear_root.hpp (exact
+//    whenever it answers: fl(q) ∉ ℤ, |fl(q)| < 2^52) or else from an exact __int128 floor division.
+//    Everything else takes the exact path (Polynomial + LatticeRootSolver).
 //    The queue is a binary heap of (lattice index, id) with lazy deletion; no GMP number is
 //    allocated per event on the fast path.
 #include <cstdint>
