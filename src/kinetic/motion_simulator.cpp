@@ -91,6 +91,7 @@ void MotionSimulator::remove(CertificateId id) {
       queue_.erase({r.exact->failure.value(), id});
   }
   r.scheduled = false;
+  r.pending = false;
   r.exact.reset();
   free_slots_.push_back(slot_of_id_[id]);
   slot_of_id_[id] = kNoRecord;
@@ -106,6 +107,8 @@ const Certificate& MotionSimulator::certificate(CertificateId id) const {
   Polynomial p(std::vector<Integer>{Integer(r.c0), Integer(r.c1)});
   std::optional<Integer> failure;
   if (r.scheduled) failure = Integer(r.failure);
+  if (r.pending)
+    if (auto k = machine_failure_uncounted(r)) failure = Integer(*k);
   poly::LatticeRootSolver solver(p, bits_);
   views_.insert_or_assign(id, Certificate{std::move(p), std::move(solver), r.outcome, std::move(failure)});
   return views_.at(id);
@@ -121,6 +124,28 @@ std::optional<std::int64_t> MotionSimulator::now_index() const {
 int MotionSimulator::machine_sign_before(const Record& r, std::int64_t k) {
   ++counters_.machine_sign_evaluations;
   return poly::linear_sign_before(r.c0, r.c1, bits_, k);
+}
+
+std::optional<std::int64_t> MotionSimulator::machine_failure_uncounted(const Record& r) const {
+  if (r.c1 == 0) return std::nullopt;
+  __int128 k;
+  if (auto filtered = poly::linear_root_interval_filtered(r.c0, r.c1, scale_))
+    k = *filtered;
+  else
+    k = poly::linear_root_interval_exact(r.c0, r.c1, bits_);
+  if (k < now_k_ || k >= last_k_) return std::nullopt;
+  return static_cast<std::int64_t>(k);
+}
+
+void MotionSimulator::flush_pending() {
+  for (CertificateId id : pending_) {
+    if (slot_of_id_[id] == kNoRecord) continue;  // removed meanwhile
+    Record& r = records_[slot_of_id_[id]];
+    if (!r.pending) continue;
+    r.pending = false;
+    schedule(r, id);
+  }
+  pending_.clear();
 }
 
 std::optional<std::int64_t> MotionSimulator::machine_failure(const Record& r) {
@@ -183,17 +208,23 @@ std::optional<Integer> MotionSimulator::next_failure_interval() const {
     return queue_.begin()->first;
   }
   // The heap's top may be stale; the earliest live entry is found without changing the heap.
-  if (heap_.empty()) return std::nullopt;
-  if (entry_live(heap_.front())) return Integer(heap_.front().k);
   std::optional<std::int64_t> best;
-  for (const Entry& e : heap_)
-    if (entry_live(e) && (!best || e.k < *best)) best = e.k;
+  for (CertificateId id : pending_)
+    if (slot_of_id_[id] != kNoRecord && records_[slot_of_id_[id]].pending)
+      if (auto k = machine_failure_uncounted(records_[slot_of_id_[id]]); k && (!best || *k < *best)) best = k;
+  if (!heap_.empty() && entry_live(heap_.front())) {
+    if (!best || heap_.front().k < *best) best = heap_.front().k;
+  } else {
+    for (const Entry& e : heap_)
+      if (entry_live(e) && (!best || e.k < *best)) best = e.k;
+  }
   if (!best) return std::nullopt;
   return Integer(*best);
 }
 
 std::optional<std::vector<CertificateId>> MotionSimulator::next_batch(const Dyadic& until) {
   std::vector<CertificateId> batch;
+  flush_pending();
   if (small_lattice_) {
     auto pop = [&] {
       std::pop_heap(heap_.begin(), heap_.end(), std::greater<>{});
@@ -228,6 +259,9 @@ std::optional<std::vector<CertificateId>> MotionSimulator::next_batch(const Dyad
     r.outcome = -r.outcome;
     if (r.machine) {
       KMR_CHECK(r.outcome == machine_sign_before(r, now_k_), "a popped failure did not change the sign");
+      r.pending = true;
+      pending_.push_back(id);
+      continue;
     } else {
       r.exact->failure.reset();
       r.exact->outcome = r.outcome;

@@ -99,6 +99,7 @@ class MotionSimulator {
     std::int64_t c0 = 0, c1 = 0;
     std::int64_t failure = 0;          // the scheduled interval, when scheduled and the lattice is small
     bool machine = false, scheduled = false;
+    bool pending = false;              // popped machine record whose rescheduling is deferred
     int outcome = 0;
     std::unique_ptr<Certificate> exact;
   };
@@ -114,7 +115,9 @@ class MotionSimulator {
   const Record& record(CertificateId id) const;
   void schedule(Record& r, CertificateId id);
   int machine_sign_before(const Record& r, std::int64_t k);  // exact sign just before kδ
-  std::optional<std::int64_t> machine_failure(const Record& r);     // interval in [now, last)
+  std::optional<std::int64_t> machine_failure(const Record& r);     // interval in [now, last), counted
+  std::optional<std::int64_t> machine_failure_uncounted(const Record& r) const;
+  void flush_pending();  // schedules the popped machine records not removed since
   bool entry_live(const Entry& e) const;
   void compact_heap();
 
@@ -132,6 +135,10 @@ class MotionSimulator {
   std::vector<std::uint32_t> free_slots_;
   std::vector<Entry> heap_;                 // min-heap by (k, id); lazy deletion
   long long stale_entries_ = 0;
+  // Popped machine records are rescheduled lazily (most are removed by their structure's update
+  // right away): before the next batch, or computed on demand by certificate() and
+  // next_failure_interval(), which reports the same answers as eager rescheduling.
+  std::vector<CertificateId> pending_;
   std::set<std::pair<Integer, CertificateId>> queue_;  // (failure interval, id), huge lattices only
   mutable std::unordered_map<CertificateId, Certificate> views_;  // certificate() of machine records
   SimulatorCounters counters_;
