@@ -28,7 +28,7 @@ struct StudyRun {
   long long machine_steps = 0;    // machine path: failure intervals (filter or __int128) + sign evaluations
   long long ties = 0;             // classic: equal failure times established at the separation bound
   long long root_work() const { return sturm_queries + bisection_steps + machine_steps; }
-  double seconds = 0;             // the run, after the initial certificates
+  double seconds = 0;             // the run, after the initial certificates (thread CPU time)
   std::vector<std::size_t> order; // at the end
 };
 
