@@ -11,7 +11,23 @@ namespace kmr::kinetic {
 
 namespace {
 constexpr std::size_t kNoSlot = static_cast<std::size_t>(-1);
+
+// Puts distinct marked slots in increasing order: a scan of the marks when they are dense in their
+// range (large batches), else a sort.
+void sort_marked(std::vector<std::size_t>& slots, const std::vector<char>& marked) {
+  if (slots.empty()) return;
+  auto [lo, hi] = std::minmax_element(slots.begin(), slots.end());
+  std::size_t first = *lo, last = *hi;
+  if (last - first < 8 * slots.size()) {
+    slots.clear();
+    for (std::size_t j = first; j <= last; ++j)
+      if (marked[j]) slots.push_back(j);
+  } else {
+    std::sort(slots.begin(), slots.end());
+  }
 }
+
+}  // namespace
 
 KineticSort::KineticSort(std::vector<Polynomial> positions, MotionSimulator& simulator)
     : x_(std::move(positions)), sim_(simulator), order_(x_.size()) {
@@ -85,8 +101,8 @@ void KineticSort::update(const std::vector<CertificateId>& batch) {
     KMR_CHECK(id < slot_of_.size() && slot_of_[id] != kNoSlot, "a batch names a certificate this sort does not own");
     slots.push_back(slot_of_[id]);
   }
-  std::sort(slots.begin(), slots.end());
   for (std::size_t j : slots) is_dirty_[j] = 1;  // batch slots
+  sort_marked(slots, is_dirty_);
   auto mark_changed = [&](std::size_t j) {
     if (j + 1 < order_.size() && !is_changed_[j]) is_changed_[j] = 1, changed.push_back(j);
   };
@@ -116,18 +132,7 @@ void KineticSort::update(const std::vector<CertificateId>& batch) {
     }
   }
   for (std::size_t j : slots) is_dirty_[j] = 0;
-  // Increasing slot order: a scan of the marks when they are dense in their range, else a sort.
-  if (!changed.empty()) {
-    auto [lo, hi] = std::minmax_element(changed.begin(), changed.end());
-    std::size_t first = *lo, last = *hi;
-    if (last - first < 8 * changed.size()) {
-      changed.clear();
-      for (std::size_t j = first; j <= last; ++j)
-        if (is_changed_[j]) changed.push_back(j);
-    } else {
-      std::sort(changed.begin(), changed.end());
-    }
-  }
+  sort_marked(changed, is_changed_);
   for (std::size_t slot : changed) {
     is_changed_[slot] = 0;
     CertificateId old = slot_certificate_[slot];
