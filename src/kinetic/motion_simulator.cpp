@@ -86,7 +86,7 @@ void MotionSimulator::remove(CertificateId id) {
   Record& r = record(id);
   if (r.scheduled) {
     if (small_lattice_)
-      ++stale_entries_;  // its heap entry is skipped when it surfaces
+      ++stale_entries_;  // its queue entry is skipped when it surfaces
     else
       queue_.erase({r.exact->failure.value(), id});
   }
@@ -97,7 +97,7 @@ void MotionSimulator::remove(CertificateId id) {
   slot_of_id_[id] = kNoRecord;
   views_.erase(id);
   ++counters_.destroyed;
-  if (stale_entries_ > 1024 && stale_entries_ * 2 > static_cast<long long>(heap_.size())) compact_heap();
+  if (stale_entries_ > 1024 && stale_entries_ * 2 > static_cast<long long>(lattice_queue_.size())) compact_queue();
 }
 
 const Certificate& MotionSimulator::certificate(CertificateId id) const {
@@ -185,8 +185,7 @@ void MotionSimulator::schedule(Record& r, CertificateId id) {
     }
   }
   if (r.scheduled && small_lattice_) {
-    heap_.push_back({r.failure, id});
-    std::push_heap(heap_.begin(), heap_.end(), std::greater<>{});
+    lattice_queue_.push(r.failure, id);
   }
 }
 
@@ -196,9 +195,8 @@ bool MotionSimulator::entry_live(const Entry& e) const {
   return r.scheduled && r.failure == e.k;  // a record is scheduled at most once per interval
 }
 
-void MotionSimulator::compact_heap() {
-  std::erase_if(heap_, [&](const Entry& e) { return !entry_live(e); });
-  std::make_heap(heap_.begin(), heap_.end(), std::greater<>{});
+void MotionSimulator::compact_queue() {
+  lattice_queue_.compact([&](const Entry& e) { return entry_live(e); });
   stale_entries_ = 0;
 }
 
@@ -207,17 +205,13 @@ std::optional<Integer> MotionSimulator::next_failure_interval() const {
     if (queue_.empty()) return std::nullopt;
     return queue_.begin()->first;
   }
-  // The heap's top may be stale; the earliest live entry is found without changing the heap.
+  // The earliest live entry, found without changing the queue (pending records included).
   std::optional<std::int64_t> best;
   for (CertificateId id : pending_)
     if (slot_of_id_[id] != kNoRecord && records_[slot_of_id_[id]].pending)
       if (auto k = machine_failure_uncounted(records_[slot_of_id_[id]]); k && (!best || *k < *best)) best = k;
-  if (!heap_.empty() && entry_live(heap_.front())) {
-    if (!best || heap_.front().k < *best) best = heap_.front().k;
-  } else {
-    for (const Entry& e : heap_)
-      if (entry_live(e) && (!best || e.k < *best)) best = e.k;
-  }
+  if (auto k = lattice_queue_.earliest_unchanged([&](const Entry& e) { return entry_live(e); }); k && (!best || *k < *best))
+    best = k;
   if (!best) return std::nullopt;
   return Integer(*best);
 }
@@ -226,21 +220,14 @@ std::optional<std::vector<CertificateId>> MotionSimulator::next_batch(const Dyad
   std::vector<CertificateId> batch;
   flush_pending();
   if (small_lattice_) {
-    auto pop = [&] {
-      std::pop_heap(heap_.begin(), heap_.end(), std::greater<>{});
-      heap_.pop_back();
-    };
-    while (!heap_.empty() && !entry_live(heap_.front())) pop(), --stale_entries_;
-    if (heap_.empty()) return std::nullopt;
-    std::int64_t k = heap_.front().k;
+    auto live = [&](const Entry& e) { return entry_live(e); };
+    auto k = lattice_queue_.earliest(live);
+    if (!k) return std::nullopt;
     // (k+1)δ > until ⇔ k + 1 > floor(until·2^b): compared as Integers once per batch.
-    if (Integer(k) + 1 > until.shifted(bits_).floor()) return std::nullopt;
-    while (!heap_.empty() && heap_.front().k == k) {
-      if (entry_live(heap_.front())) batch.push_back(heap_.front().id);
-      else --stale_entries_;
-      pop();
-    }
-    now_k_ = k + 1;
+    if (Integer(*k) + 1 > until.shifted(bits_).floor()) return std::nullopt;
+    lattice_queue_.pop_interval(*k, live, batch);
+    now_k_ = *k + 1;
+    lattice_queue_.advance(now_k_);
     now_ = lattice_point(Integer(now_k_));
   } else {
     if (queue_.empty()) return std::nullopt;
@@ -252,7 +239,6 @@ std::optional<std::vector<CertificateId>> MotionSimulator::next_batch(const Dyad
     }
     now_ = lattice_point(k + 1);
   }
-  if (stale_entries_ < 0) stale_entries_ = 0;
   for (CertificateId id : batch) {
     Record& r = record(id);
     r.scheduled = false;

@@ -19,8 +19,8 @@
 //    interval floor(−c0·2^b / c1) comes from the double filter of poly/linear_root.hpp (exact
 //    whenever it answers: fl(q) ∉ ℤ, |fl(q)| < 2^52) or else from an exact __int128 floor division.
 //    Everything else takes the exact path (Polynomial + LatticeRootSolver).
-//    The queue is a binary heap of (lattice index, id) with lazy deletion; no GMP number is
-//    allocated per event on the fast path.
+//    The queue is lattice_queue.hpp (buckets for the next 1024 lattice intervals, a heap beyond,
+//    lazy deletion); no GMP number is allocated per event on the fast path.
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -29,6 +29,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "kinetic/lattice_queue.hpp"
 #include "poly/sturm.hpp"
 
 namespace kmr::kinetic {
@@ -103,11 +104,7 @@ class MotionSimulator {
     int outcome = 0;
     std::unique_ptr<Certificate> exact;
   };
-  struct Entry {  // heap entry (failure interval, id); stale once its record is gone or moved
-    std::int64_t k;
-    CertificateId id;
-    friend bool operator>(const Entry& a, const Entry& b) { return a.k != b.k ? a.k > b.k : a.id > b.id; }
-  };
+  using Entry = LatticeQueue::Entry;  // stale once its record is gone or rescheduled
   static constexpr std::uint32_t kNoRecord = 0xffffffffu;
 
   CertificateId add_record(Record r);
@@ -119,7 +116,7 @@ class MotionSimulator {
   std::optional<std::int64_t> machine_failure_uncounted(const Record& r) const;
   void flush_pending();  // schedules the popped machine records not removed since
   bool entry_live(const Entry& e) const;
-  void compact_heap();
+  void compact_queue();
 
   int bits_;
   Dyadic horizon_;
@@ -133,8 +130,8 @@ class MotionSimulator {
   std::vector<std::uint32_t> slot_of_id_;  // id → index into records_, or kNoRecord
   std::vector<Record> records_;
   std::vector<std::uint32_t> free_slots_;
-  std::vector<Entry> heap_;                 // min-heap by (k, id); lazy deletion
-  long long stale_entries_ = 0;
+  LatticeQueue lattice_queue_;              // (failure interval, id); lazy deletion
+  long long stale_entries_ = 0;              // an upper bound: entries of records removed since compaction
   // Popped machine records are rescheduled lazily (most are removed by their structure's update
   // right away): before the next batch, or computed on demand by certificate() and
   // next_failure_interval(), which reports the same answers as eager rescheduling.
