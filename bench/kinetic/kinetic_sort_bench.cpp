@@ -1,14 +1,25 @@
 // Kinetic sorting throughput on the lattice motion simulator (§2.1, §2.4 input: positions of
 // Bℓ = 20 bits, velocities of Bv = 8 bits, δ = 2^-10, M_t = 2^27).
-// usage: kinetic_sort_bench [n = 100000] [events = 200000] [seed = 1]
-// Prints JSON: events per second (initial run excluded), batch-size histogram, counters.
+// usage: kinetic_sort_bench [n = 100000] [events = 200000] [seed = 1] [path = machine|exact]
+// Prints JSON: events per second (initial run excluded; wall clock and thread CPU time), batch-size histogram, counters, and the
+// root-solver work (filter decisions, exact fallbacks, Sturm queries) per event. `exact` runs every
+// certificate on the exact path (Polynomial + LatticeRootSolver, GMP), as before the fast path.
 #include <chrono>
 #include <cstdlib>
+#include <ctime>
 #include <iostream>
 #include <random>
+#include <string>
 
 #include "kinetic/kinetic_sort.hpp"
 #include "kinetic/trajectory.hpp"
+
+// Thread CPU time: on a loaded machine it excludes the time other processes hold the core.
+double cpu_seconds() {
+  timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
 
 int main(int argc, char** argv) {
   using namespace kmr;
@@ -20,22 +31,33 @@ int main(int argc, char** argv) {
   // Identical trajectories are refused; with 2^21·2^9 choices per point they are rare: drop them.
   std::sort(x.begin(), x.end(), [](const auto& a, const auto& b) { return a.coefficients() < b.coefficients(); });
   x.erase(std::unique(x.begin(), x.end()), x.end());
-  kinetic::MotionSimulator sim(10, exact::Dyadic::pow2(27));
+  bool machine = !(argc > 4 && std::string(argv[4]) == "exact");
+  kinetic::MotionSimulator sim(10, exact::Dyadic::pow2(27), kinetic::SimulatorOptions{machine});
   auto t0 = std::chrono::steady_clock::now();
   kinetic::KineticSort sort(x, sim);
   auto t1 = std::chrono::steady_clock::now();
+  double c1 = cpu_seconds();
   while (sim.counters().events < target) {
     auto batch = sim.next_batch(sim.horizon());
     if (!batch) break;
     sort.update(*batch);
   }
   auto t2 = std::chrono::steady_clock::now();
+  double cpu = cpu_seconds() - c1;
   double initial = std::chrono::duration<double>(t1 - t0).count(), run = std::chrono::duration<double>(t2 - t1).count();
   const auto& c = sim.counters();
-  std::cout << "{\"n\": " << x.size() << ", \"initial_s\": " << initial << ", \"events\": " << c.events
+  auto per_event = [&](long long x) { return c.events ? static_cast<double>(x) / c.events : 0.0; };
+  std::cout << "{\"path\": \"" << (machine ? "machine" : "exact") << "\", \"n\": " << x.size() << ", \"initial_s\": " << initial << ", \"events\": " << c.events
             << ", \"batches\": " << c.batches << ", \"simulated_until\": \"" << sim.now().to_decimal() << "\""
             << ", \"run_s\": " << run << ", \"events_per_s\": " << (run > 0 ? c.events / run : 0)
-            << ", \"max_batch\": " << c.max_batch << ", \"batch_sizes\": {";
+            << ", \"us_per_event\": " << (c.events ? 1e6 * run / c.events : 0) << ", \"run_cpu_s\": " << cpu
+            << ", \"events_per_cpu_s\": " << (cpu > 0 ? c.events / cpu : 0)
+            << ", \"filter_decided_per_event\": " << per_event(c.filter_decided)
+            << ", \"exact_fallbacks_per_event\": " << per_event(c.filter_fallbacks)
+            << ", \"sturm_queries_per_event\": " << per_event(c.sturm_queries)
+            << ", \"machine_sign_evaluations_per_event\": " << per_event(c.machine_sign_evaluations)
+            << ", \"exact_certificates\": " << c.exact_certificates
+            << ", \"swaps\": " << sort.swaps() << ", \"max_batch\": " << c.max_batch << ", \"batch_sizes\": {";
   bool first = true;
   for (auto& [size, count] : c.batch_sizes) {
     std::cout << (first ? "" : ", ") << "\"" << size << "\": " << count;

@@ -5,4 +5,5 @@
 #include <string>
 #include <vector>
 
-void write_audit_json(const std::string& path, const std::vector<double>& a, const std::vector<double>& b, int certificates);
+void write_audit_json(const std::string& path, const std::vector<double>& a, const std::vector<double>& b, int certificates,
+                      double paired_ratio, double paired_min, double paired_max);

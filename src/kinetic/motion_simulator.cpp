@@ -1,72 +1,259 @@
 #include "kinetic/motion_simulator.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
 #include "exact/error.hpp"
+#include "poly/linear_root.hpp"
 
 namespace kmr::kinetic {
 
-MotionSimulator::MotionSimulator(int lattice_bits, Dyadic horizon) : bits_(lattice_bits), horizon_(std::move(horizon)) {
+namespace {
+
+constexpr std::int64_t kMachineLimit = std::int64_t{1} << 62;  // |c| and lattice indices below this
+
+bool fits_machine(const Integer& c) { return exact::bit_length(c) <= 61; }  // |c| < 2^61 ≤ 2^62
+
+}  // namespace
+
+MotionSimulator::MotionSimulator(int lattice_bits, Dyadic horizon)
+    : MotionSimulator(lattice_bits, std::move(horizon), SimulatorOptions{}) {}
+
+MotionSimulator::MotionSimulator(int lattice_bits, Dyadic horizon, SimulatorOptions options)
+    : bits_(lattice_bits), horizon_(std::move(horizon)), options_(options) {
   if (lattice_bits < 0 || lattice_bits > 62) throw InputError("lattice bits must be in [0, 62]");
   if (horizon_.sign() < 0) throw InputError("the horizon must be >= 0");
+  // A failure in interval k is processed at (k+1)δ, which must not pass the horizon: k < last.
+  last_k_big_ = horizon_.shifted(bits_).floor();
+  small_lattice_ = last_k_big_ < Integer(kMachineLimit);
+  scale_ = std::ldexp(1.0, bits_);
+  if (small_lattice_) last_k_ = static_cast<std::int64_t>(last_k_big_);
 }
 
-CertificateId MotionSimulator::add(const Polynomial& p) {
-  if (p.is_zero()) throw InputError("identically zero certificate polynomial: its outcome is undefined");
+MotionSimulator::Record& MotionSimulator::record(CertificateId id) {
+  KMR_CHECK(id < slot_of_id_.size() && slot_of_id_[id] != kNoRecord, "unknown certificate id");
+  return records_[slot_of_id_[id]];
+}
+const MotionSimulator::Record& MotionSimulator::record(CertificateId id) const {
+  KMR_CHECK(id < slot_of_id_.size() && slot_of_id_[id] != kNoRecord, "unknown certificate id");
+  return records_[slot_of_id_[id]];
+}
+
+CertificateId MotionSimulator::add_record(Record r) {
   CertificateId id = next_id_++;
-  int outcome = poly::sign_before(p, now_);
-  certificates_.emplace(id, Certificate{p, poly::LatticeRootSolver(p, bits_), outcome, std::nullopt});
-  schedule(id);
+  std::uint32_t slot;
+  if (!free_slots_.empty()) {
+    slot = free_slots_.back();
+    free_slots_.pop_back();
+    records_[slot] = std::move(r);
+  } else {
+    slot = static_cast<std::uint32_t>(records_.size());
+    records_.push_back(std::move(r));
+  }
+  slot_of_id_.push_back(slot);  // ids are sequential: slot_of_id_[id]
+  schedule(records_[slot], id);
   ++counters_.created;
   return id;
 }
 
+CertificateId MotionSimulator::add(const Polynomial& p) {
+  if (p.is_zero()) throw InputError("identically zero certificate polynomial: its outcome is undefined");
+  if (options_.machine_fast_path && small_lattice_ && p.degree() <= 1 &&
+      std::all_of(p.coefficients().begin(), p.coefficients().end(), fits_machine))
+    return add_linear(static_cast<std::int64_t>(p[0]), p.degree() == 1 ? static_cast<std::int64_t>(p[1]) : 0);
+  Record r;
+  int outcome = poly::sign_before(p, now_);
+  r.exact = std::make_unique<Certificate>(Certificate{p, poly::LatticeRootSolver(p, bits_), outcome, std::nullopt});
+  r.outcome = outcome;
+  ++counters_.exact_certificates;
+  return add_record(std::move(r));
+}
+
+CertificateId MotionSimulator::add_linear(std::int64_t c0, std::int64_t c1) {
+  if (c0 == 0 && c1 == 0) throw InputError("identically zero certificate polynomial: its outcome is undefined");
+  auto small = [](std::int64_t c) { return c > -kMachineLimit && c < kMachineLimit; };
+  if (!options_.machine_fast_path || !small_lattice_ || !small(c0) || !small(c1))
+    return add(Polynomial(std::vector<Integer>{Integer(c0), Integer(c1)}));
+  Record r;
+  r.machine = true;
+  r.c0 = c0, r.c1 = c1;
+  r.outcome = machine_sign_before(r, now_k_);
+  return add_record(std::move(r));
+}
+
 void MotionSimulator::remove(CertificateId id) {
-  unschedule(id);
-  KMR_CHECK(certificates_.erase(id) == 1, "removing an unknown certificate");
+  Record& r = record(id);
+  if (r.scheduled) {
+    if (small_lattice_)
+      ++stale_entries_;  // its queue entry is skipped when it surfaces
+    else
+      queue_.erase({r.exact->failure.value(), id});
+  }
+  r.scheduled = false;
+  r.pending = false;
+  r.exact.reset();
+  free_slots_.push_back(slot_of_id_[id]);
+  slot_of_id_[id] = kNoRecord;
+  views_.erase(id);
   ++counters_.destroyed;
+  if (stale_entries_ > 1024 && stale_entries_ * 2 > static_cast<long long>(lattice_queue_.size())) compact_queue();
 }
 
 const Certificate& MotionSimulator::certificate(CertificateId id) const {
-  auto it = certificates_.find(id);
-  KMR_CHECK(it != certificates_.end(), "unknown certificate id");
-  return it->second;
+  const Record& r = record(id);
+  if (!r.machine) return *r.exact;
+  // A view built on demand (off the hot path): the same polynomial and solver the exact path uses.
+  Polynomial p(std::vector<Integer>{Integer(r.c0), Integer(r.c1)});
+  std::optional<Integer> failure;
+  if (r.scheduled) failure = Integer(r.failure);
+  if (r.pending)
+    if (auto k = machine_failure_uncounted(r)) failure = Integer(*k);
+  poly::LatticeRootSolver solver(p, bits_);
+  views_.insert_or_assign(id, Certificate{std::move(p), std::move(solver), r.outcome, std::move(failure)});
+  return views_.at(id);
 }
 
-void MotionSimulator::schedule(CertificateId id) {
-  Certificate& c = certificates_.at(id);
-  // A failure in interval k is processed at (k+1)δ, which must not pass the horizon.
-  Dyadic last_end = lattice_point(horizon_.shifted(bits_).floor());  // the last lattice point ≤ horizon
-  c.failure = c.solver.next_failure_after(now_, last_end);
-  if (c.failure) queue_.emplace(*c.failure, id);
+int MotionSimulator::outcome(CertificateId id) const { return record(id).outcome; }
+
+std::optional<std::int64_t> MotionSimulator::now_index() const {
+  if (!small_lattice_) return std::nullopt;
+  return now_k_;
 }
 
-void MotionSimulator::unschedule(CertificateId id) {
-  auto it = certificates_.find(id);
-  KMR_CHECK(it != certificates_.end(), "unknown certificate id");
-  if (it->second.failure) queue_.erase({*it->second.failure, id});
-  it->second.failure.reset();
+int MotionSimulator::machine_sign_before(const Record& r, std::int64_t k) {
+  ++counters_.machine_sign_evaluations;
+  return poly::linear_sign_before(r.c0, r.c1, bits_, k);
+}
+
+std::optional<std::int64_t> MotionSimulator::machine_failure_uncounted(const Record& r) const {
+  if (r.c1 == 0) return std::nullopt;
+  __int128 k;
+  if (auto filtered = poly::linear_root_interval_filtered(r.c0, r.c1, scale_))
+    k = *filtered;
+  else
+    k = poly::linear_root_interval_exact(r.c0, r.c1, bits_);
+  if (k < now_k_ || k >= last_k_) return std::nullopt;
+  return static_cast<std::int64_t>(k);
+}
+
+void MotionSimulator::flush_pending() {
+  for (CertificateId id : pending_) {
+    if (slot_of_id_[id] == kNoRecord) continue;  // removed meanwhile
+    Record& r = records_[slot_of_id_[id]];
+    if (!r.pending) continue;
+    r.pending = false;
+    schedule(r, id);
+  }
+  pending_.clear();
+}
+
+std::optional<std::int64_t> MotionSimulator::machine_failure(const Record& r) {
+  if (r.c1 == 0) return std::nullopt;  // a nonzero constant never fails
+  // The one root −c0/c1 lies in interval k = floor(−c0·2^b / c1) (poly/linear_root.hpp: the double
+  // filter, else exact __int128 division); it is a failure iff now ≤ kδ and k < last.
+  __int128 k;
+  if (auto filtered = poly::linear_root_interval_filtered(r.c0, r.c1, scale_)) {
+    ++counters_.filter_decided;
+    k = *filtered;
+  } else {
+    ++counters_.filter_fallbacks;
+    k = poly::linear_root_interval_exact(r.c0, r.c1, bits_);
+  }
+  if (k < now_k_ || k >= last_k_) return std::nullopt;
+  return static_cast<std::int64_t>(k);
+}
+
+void MotionSimulator::schedule(Record& r, CertificateId id) {
+  r.scheduled = false;
+  if (r.machine) {
+    if (auto k = machine_failure(r)) {
+      r.failure = *k;
+      r.scheduled = true;
+    }
+  } else {
+    Certificate& c = *r.exact;
+    long long before = c.solver.sturm_queries;
+    c.failure = c.solver.next_failure_after(now_, lattice_point(last_k_big_));
+    counters_.sturm_queries += c.solver.sturm_queries - before;
+    if (c.failure) {
+      r.scheduled = true;
+      if (small_lattice_)
+        r.failure = static_cast<std::int64_t>(*c.failure);
+      else
+        queue_.emplace(*c.failure, id);
+    }
+  }
+  if (r.scheduled && small_lattice_) {
+    lattice_queue_.push(r.failure, id);
+  }
+}
+
+bool MotionSimulator::entry_live(const Entry& e) const {
+  if (e.id >= slot_of_id_.size() || slot_of_id_[e.id] == kNoRecord) return false;
+  const Record& r = records_[slot_of_id_[e.id]];
+  return r.scheduled && r.failure == e.k;  // a record is scheduled at most once per interval
+}
+
+void MotionSimulator::compact_queue() {
+  lattice_queue_.compact([&](const Entry& e) { return entry_live(e); });
+  stale_entries_ = 0;
 }
 
 std::optional<Integer> MotionSimulator::next_failure_interval() const {
-  if (queue_.empty()) return std::nullopt;
-  return queue_.begin()->first;
+  if (!small_lattice_) {
+    if (queue_.empty()) return std::nullopt;
+    return queue_.begin()->first;
+  }
+  // The earliest live entry, found without changing the queue (pending records included).
+  std::optional<std::int64_t> best;
+  for (CertificateId id : pending_)
+    if (slot_of_id_[id] != kNoRecord && records_[slot_of_id_[id]].pending)
+      if (auto k = machine_failure_uncounted(records_[slot_of_id_[id]]); k && (!best || *k < *best)) best = k;
+  if (auto k = lattice_queue_.earliest_unchanged([&](const Entry& e) { return entry_live(e); }); k && (!best || *k < *best))
+    best = k;
+  if (!best) return std::nullopt;
+  return Integer(*best);
 }
 
 std::optional<std::vector<CertificateId>> MotionSimulator::next_batch(const Dyadic& until) {
-  if (queue_.empty()) return std::nullopt;
-  Integer k = queue_.begin()->first;
-  if (lattice_point(k + 1) > until) return std::nullopt;
   std::vector<CertificateId> batch;
-  while (!queue_.empty() && queue_.begin()->first == k) {
-    batch.push_back(queue_.begin()->second);
-    queue_.erase(queue_.begin());
+  flush_pending();
+  if (small_lattice_) {
+    auto live = [&](const Entry& e) { return entry_live(e); };
+    auto k = lattice_queue_.earliest(live);
+    if (!k) return std::nullopt;
+    // (k+1)δ > until ⇔ k + 1 > floor(until·2^b): compared as Integers once per batch.
+    if (Integer(*k) + 1 > until.shifted(bits_).floor()) return std::nullopt;
+    lattice_queue_.pop_interval(*k, live, batch);
+    now_k_ = *k + 1;
+    lattice_queue_.advance(now_k_);
+    now_ = lattice_point(Integer(now_k_));
+  } else {
+    if (queue_.empty()) return std::nullopt;
+    Integer k = queue_.begin()->first;
+    if (lattice_point(k + 1) > until) return std::nullopt;
+    while (!queue_.empty() && queue_.begin()->first == k) {
+      batch.push_back(queue_.begin()->second);
+      queue_.erase(queue_.begin());
+    }
+    now_ = lattice_point(k + 1);
   }
-  now_ = lattice_point(k + 1);
   for (CertificateId id : batch) {
-    Certificate& c = certificates_.at(id);
-    c.failure.reset();
-    c.outcome = -c.outcome;
-    KMR_CHECK(c.outcome == poly::sign_before(c.polynomial, now_), "a popped failure did not change the sign");
-    schedule(id);
+    Record& r = record(id);
+    r.scheduled = false;
+    r.outcome = -r.outcome;
+    if (r.machine) {
+      KMR_CHECK(r.outcome == machine_sign_before(r, now_k_), "a popped failure did not change the sign");
+      r.pending = true;
+      pending_.push_back(id);
+      continue;
+    } else {
+      r.exact->failure.reset();
+      r.exact->outcome = r.outcome;
+      KMR_CHECK(r.outcome == poly::sign_before(r.exact->polynomial, now_), "a popped failure did not change the sign");
+    }
+    schedule(r, id);
   }
   auto size = static_cast<long long>(batch.size());
   counters_.events += size;

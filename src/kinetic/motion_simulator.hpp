@@ -13,13 +13,23 @@
 //  * add() refuses an identically-zero certificate polynomial with an InputError.
 //  * Results do not depend on anything but the certificates added and their order of addition
 //    (ids are assigned sequentially; ties in the queue are broken by id).
+//  * The machine fast path changes no decision, only its cost (spec/kinetic.md): a certificate of
+//    degree ≤ 1 with coefficients |c| < 2^62 on a lattice whose horizon index is < 2^62 is kept as
+//    two int64 coefficients. Its signs at lattice points are exact in __int128; its failure
+//    interval floor(−c0·2^b / c1) comes from the double filter of poly/linear_root.hpp (exact
+//    whenever it answers: fl(q) ∉ ℤ, |fl(q)| < 2^52) or else from an exact __int128 floor division.
+//    Everything else takes the exact path (Polynomial + LatticeRootSolver).
+//    The queue is lattice_queue.hpp (buckets for the next 1024 lattice intervals, a heap beyond,
+//    lazy deletion); no GMP number is allocated per event on the fast path.
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <unordered_map>
 #include <vector>
 
+#include "kinetic/lattice_queue.hpp"
 #include "poly/sturm.hpp"
 
 namespace kmr::kinetic {
@@ -44,22 +54,38 @@ struct SimulatorCounters {
   long long created = 0, destroyed = 0;
   std::map<long long, long long> batch_sizes;  // size → number of batches of that size
   long long live() const { return created - destroyed; }
+  // Root-solver work (spec/kinetic.md): failure intervals decided by the double filter, by the
+  // exact __int128 fallback, and certificates on the exact (GMP, Sturm) path with their Sturm
+  // queries; sign evaluations at lattice points on the machine path (outcomes and checks).
+  long long filter_decided = 0, filter_fallbacks = 0, exact_certificates = 0;
+  long long sturm_queries = 0, machine_sign_evaluations = 0;
+};
+
+struct SimulatorOptions {
+  bool machine_fast_path = true;  // false: every certificate on the exact path (for comparisons)
 };
 
 class MotionSimulator {
  public:
   // δ = 2^−lattice_bits; failures are scheduled only in intervals [kδ, (k+1)δ) with (k+1)δ ≤ horizon.
   MotionSimulator(int lattice_bits, Dyadic horizon);
+  MotionSimulator(int lattice_bits, Dyadic horizon, SimulatorOptions options);
 
   int lattice_bits() const { return bits_; }
   const Dyadic& now() const { return now_; }
   const Dyadic& horizon() const { return horizon_; }
+  const SimulatorOptions& options() const { return options_; }
   Dyadic lattice_point(const Integer& k) const { return Dyadic(k, -bits_); }
 
   CertificateId add(const Polynomial& p);
+  // The certificate c0 + c1·t, without building a Polynomial (the fast path when it applies).
+  CertificateId add_linear(std::int64_t c0, std::int64_t c1);
   void remove(CertificateId id);
+  // A view of the certificate; the reference is valid until the next call on the simulator.
   const Certificate& certificate(CertificateId id) const;
-  int outcome(CertificateId id) const { return certificate(id).outcome; }
+  int outcome(CertificateId id) const;
+  // The lattice index of now() when the fast path's lattice applies (horizon index < 2^62).
+  std::optional<std::int64_t> now_index() const;
 
   // The next batch with (k+1)δ ≤ until, or nothing (now() unchanged) if there is none.
   std::optional<std::vector<CertificateId>> next_batch(const Dyadic& until);
@@ -69,15 +95,49 @@ class MotionSimulator {
   const SimulatorCounters& counters() const { return counters_; }
 
  private:
-  void schedule(CertificateId id);
-  void unschedule(CertificateId id);
+  // One certificate. Machine records hold c0 + c1·t; the others hold the exact Certificate.
+  struct Record {
+    std::int64_t c0 = 0, c1 = 0;
+    std::int64_t failure = 0;          // the scheduled interval, when scheduled and the lattice is small
+    bool machine = false, scheduled = false;
+    bool pending = false;              // popped machine record whose rescheduling is deferred
+    int outcome = 0;
+    std::unique_ptr<Certificate> exact;
+  };
+  using Entry = LatticeQueue::Entry;  // stale once its record is gone or rescheduled
+  static constexpr std::uint32_t kNoRecord = 0xffffffffu;
+
+  CertificateId add_record(Record r);
+  Record& record(CertificateId id);
+  const Record& record(CertificateId id) const;
+  void schedule(Record& r, CertificateId id);
+  int machine_sign_before(const Record& r, std::int64_t k);  // exact sign just before kδ
+  std::optional<std::int64_t> machine_failure(const Record& r);     // interval in [now, last), counted
+  std::optional<std::int64_t> machine_failure_uncounted(const Record& r) const;
+  void flush_pending();  // schedules the popped machine records not removed since
+  bool entry_live(const Entry& e) const;
+  void compact_queue();
 
   int bits_;
   Dyadic horizon_;
   Dyadic now_{0};
+  SimulatorOptions options_;
+  bool small_lattice_ = false;        // last_k_ < 2^62: int64 lattice indices and the heap queue
+  std::int64_t now_k_ = 0, last_k_ = 0;
+  double scale_ = 1;                  // 2^bits, for the double filter
+  Integer last_k_big_;                // the last lattice index ≤ horizon
   CertificateId next_id_ = 0;
-  std::unordered_map<CertificateId, Certificate> certificates_;  // lookup only; never iterated
-  std::set<std::pair<Integer, CertificateId>> queue_;            // (failure interval, id)
+  std::vector<std::uint32_t> slot_of_id_;  // id → index into records_, or kNoRecord
+  std::vector<Record> records_;
+  std::vector<std::uint32_t> free_slots_;
+  LatticeQueue lattice_queue_;              // (failure interval, id); lazy deletion
+  long long stale_entries_ = 0;              // an upper bound: entries of records removed since compaction
+  // Popped machine records are rescheduled lazily (most are removed by their structure's update
+  // right away): before the next batch, or computed on demand by certificate() and
+  // next_failure_interval(), which reports the same answers as eager rescheduling.
+  std::vector<CertificateId> pending_;
+  std::set<std::pair<Integer, CertificateId>> queue_;  // (failure interval, id), huge lattices only
+  mutable std::unordered_map<CertificateId, Certificate> views_;  // certificate() of machine records
   SimulatorCounters counters_;
 };
 

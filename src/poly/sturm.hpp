@@ -70,6 +70,12 @@ class LatticeRootSolver {
   std::vector<LatticeInterval> isolate(const Dyadic& from, const Dyadic& to) const;
   std::optional<Integer> next_failure_after(const Dyadic& t, const Dyadic& horizon) const;
 
+  // Distinct real roots < m / 2^s: one Sturm query (counted), for refinement below the lattice.
+  int roots_below(const Integer& m, long long s) const {
+    ++sturm_queries;
+    return sturm_.roots_below(m, s);
+  }
+
   // Lattice-indexed helpers: sign of p just before kδ, and whether interval k changes sign.
   int sign_before_lattice(const Integer& k) const;
   bool sign_changes_across(const Integer& k) const;

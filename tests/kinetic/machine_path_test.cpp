@@ -1,0 +1,119 @@
+// The simulator's machine fast path against its exact path (SimulatorOptions{false}: Polynomial,
+// LatticeRootSolver, GMP) on adversarial certificates and on kinetic sorting with simultaneous
+// crossings: every outcome, every scheduled failure and every batch must be the same.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "kinetic/kinetic_sort.hpp"
+
+namespace {
+
+using kmr::exact::Dyadic;
+using kmr::exact::Integer;
+using kmr::kinetic::CertificateId;
+using kmr::kinetic::MotionSimulator;
+using kmr::kinetic::SimulatorOptions;
+using kmr::poly::Polynomial;
+
+Polynomial linear(std::int64_t c0, std::int64_t c1) { return Polynomial(std::vector<Integer>{Integer(c0), Integer(c1)}); }
+
+// Certificates for lattice bits b and a horizon of H lattice steps: roots on lattice points (the
+// start, the last interval before the horizon, the horizon), within 2^-40 and within one part in
+// 2^52 of a lattice point, coefficients at 2^53 and at the machine limit, beyond it (exact path in
+// both), and double roots / clusters of degree 2 (exact path in both).
+std::vector<Polynomial> adversarial(int b, std::int64_t H, std::mt19937_64& rng) {
+  auto uniform = [&](std::int64_t lo, std::int64_t hi) { return std::uniform_int_distribution<std::int64_t>(lo, hi)(rng); };
+  std::vector<Polynomial> out;
+  const std::int64_t two40 = std::int64_t{1} << 40, limit = (std::int64_t{1} << 62) - 1;
+  for (int i = 0; i < 60; ++i) {
+    std::int64_t k = uniform(0, H + 1), u = uniform(1, 1 << 6) * (uniform(0, 1) ? 1 : -1);
+    std::int64_t lattice = k << (40 - b);  // kδ = lattice·2^−40
+    out.push_back(linear(-u * lattice, u * two40));          // root exactly at kδ
+    for (std::int64_t d : {-1, 1}) out.push_back(linear(-u * lattice + u * d, u * two40));  // kδ ∓ 2^−40
+    std::int64_t big = uniform(std::int64_t{1} << 52, (std::int64_t{1} << 53) - 1);
+    out.push_back(linear(-(big / (H + 1)) * k, big / (H + 1)));                          // large, on kδ·2^b
+    out.push_back(linear(limit - uniform(0, 9), -(limit / (H + 2)) - uniform(0, 9)));      // machine limit
+    out.push_back(Polynomial(std::vector<Integer>{-(Integer(1) << 70) * k, Integer(1) << (70 + b)}));  // beyond it
+    Polynomial r = linear(-k, std::int64_t{1} << b);  // root kδ, then doubled and clustered
+    out.push_back(r * r);
+    out.push_back(r * linear(-(k << 20) - 1, std::int64_t{1} << (b + 20)));
+  }
+  return out;
+}
+
+TEST(MachinePath, A2_1_SameOutcomesFailuresAndBatchesAsTheExactPath) {
+  RecordProperty("claim", "A2.1-machine-filter");
+  std::mt19937_64 rng(7);
+  long long batches = 0;
+  for (int b : {0, 3, 10, 20}) {
+    const std::int64_t H = 64;
+    Dyadic horizon(Integer(H), -b);
+    MotionSimulator fast(b, horizon), exact(b, horizon, SimulatorOptions{false});
+    std::vector<CertificateId> ids;
+    for (const Polynomial& p : adversarial(b, H, rng)) {
+      CertificateId a = fast.add(p), e = exact.add(p);
+      ASSERT_EQ(a, e);
+      ids.push_back(a);
+      EXPECT_EQ(fast.outcome(a), exact.outcome(e)) << p.to_string();
+      EXPECT_EQ(fast.certificate(a).failure, exact.certificate(e).failure) << p.to_string();
+    }
+    EXPECT_GT(fast.counters().filter_fallbacks, 0);
+    EXPECT_GT(fast.counters().filter_decided, 0);
+    EXPECT_EQ(exact.counters().filter_decided + exact.counters().filter_fallbacks, 0);
+    for (;;) {
+      auto x = fast.next_batch(horizon), y = exact.next_batch(horizon);
+      ASSERT_EQ(x.has_value(), y.has_value());
+      if (!x) break;
+      ++batches;
+      ASSERT_EQ(*x, *y) << "at t = " << exact.now().to_decimal();
+      ASSERT_EQ(fast.now(), exact.now());
+      for (CertificateId id : ids) {
+        ASSERT_EQ(fast.outcome(id), exact.outcome(id));
+        ASSERT_EQ(fast.next_failure_interval(), exact.next_failure_interval());
+      }
+    }
+  }
+  EXPECT_GT(batches, 40);
+}
+
+// §2.4-style points plus every 7th point through the place of point 0 at t = 3 (simultaneous
+// crossings, roots on a lattice point), on both paths: same order after every batch.
+TEST(MachinePath, A2_1_KineticSortIsTheSameOnBothPaths) {
+  RecordProperty("claim", "A2.1-machine-filter");
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<long long> pos(-(1LL << 20), 1LL << 20), vel(-(1LL << 8), 1LL << 8);
+  std::vector<std::pair<long long, long long>> m;
+  for (int i = 0; i < 250; ++i) m.emplace_back(pos(rng), vel(rng) << 12);
+  for (std::size_t i = 7; i < m.size(); i += 7) {
+    long long v = m[0].second - 4096 * static_cast<long long>(i);  // x_i(3) = x_0(3)
+    m[i] = {m[0].first + (m[0].second - v) * 3, v};
+  }
+  std::sort(m.begin(), m.end());
+  m.erase(std::unique(m.begin(), m.end()), m.end());
+  std::vector<Polynomial> x;
+  for (auto& [x0, v] : m) x.push_back(linear(x0, v));
+  const int b = 10;
+  Dyadic until(Integer(8));
+  MotionSimulator fast(b, until), exact(b, until, SimulatorOptions{false});
+  kmr::kinetic::KineticSort a(x, fast), e(x, exact);
+  ASSERT_EQ(a.order(), e.order());
+  long long batches = 0;
+  for (;;) {
+    auto p = fast.next_batch(until), q = exact.next_batch(until);
+    ASSERT_EQ(p.has_value(), q.has_value());
+    if (!p) break;
+    ASSERT_EQ(*p, *q);
+    a.update(*p);
+    e.update(*q);
+    ASSERT_EQ(a.order(), e.order()) << "at t = " << exact.now().to_decimal();
+    ++batches;
+  }
+  EXPECT_EQ(a.swaps(), e.swaps());
+  EXPECT_GT(fast.counters().max_batch, 30);  // the meeting of 35 points at t = 3 is one batch
+  EXPECT_EQ(fast.counters().exact_certificates, 0);
+  EXPECT_GT(exact.counters().exact_certificates, 0);
+  EXPECT_GT(batches, 100);
+}
+
+}  // namespace
