@@ -1,0 +1,88 @@
+#pragma once
+// The predicates the incremental hull (§2.2) asks, over points given by input index. Two kernels:
+//
+//  * ExactKernel: every answer is the true sign. orientation is geometry::filtered_orientation
+//    (Shewchuk-style filter, Dyadic fallback). The centre c = (a+b+c+d)/4 of the initial
+//    tetrahedron is kept exactly as a Dyadic point (the sum of four doubles is dyadic; /4 is a
+//    shift, so no scaling by 4 is needed); centre tests orientation(u, v, c, x) are filtered with c
+//    rounded to a double c̃ and the extra error |det[v−u, c−c̃, x−u]| ≤ η·Σ_{i≠j}|A_i||B_j|
+//    (A = v−u, B = x−u, η ≥ max_k |c_k − c̃_k|) added to the orientation filter's bound.
+//  * FloatKernel: the same questions in plain double arithmetic, with c̃ as the centre. Not robust:
+//    near-degenerate inputs may get wrong signs (the Fig. 2.4 baseline only).
+//
+// Both count their orientation tests and (exact) the filter failures that went to Dyadic.
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "exact/dyadic.hpp"
+#include "geometry/filtered_orientation.hpp"
+
+namespace kmr::hull {
+
+using Point3d = geometry::Point3d;
+
+struct PredicateCounts {
+  std::uint64_t orientation_tests = 0;  // orientation and centre tests together
+  std::uint64_t exact_fallbacks = 0;    // decided by Dyadic arithmetic (ExactKernel only)
+};
+
+class ExactKernel {
+ public:
+  explicit ExactKernel(const std::vector<Point3d>& points);
+  static constexpr bool exact = true;
+
+  int orientation(int p, int q, int r, int s);
+  bool equal(int p, int q) const { return pts_[p] == pts_[q]; }
+  bool collinear(int p, int q, int r);
+  // Fixes the centre to the centroid of the initial tetrahedron a, b, c, d.
+  void set_centre(int a, int b, int c, int d);
+  // orientation(u, v, centre, x): ≥ 0 iff x lies on the side of plane (u, v, c) the pyramid of
+  // face (u, v, w) occupies.
+  int centre_side(int u, int v, int x);
+  const PredicateCounts& counts() const { return counts_; }
+
+ private:
+  const std::vector<Point3d>& pts_;
+  bool all_safe_ = true;  // every input coordinate in the filter's safe range
+  bool centre_safe_ = false;
+  Point3d centre_approx_{};
+  double eta_ = 0;  // ≥ max_k |c_k − c̃_k|
+  geometry::Point<3, exact::Dyadic> centre_;
+  PredicateCounts counts_;
+};
+
+class FloatKernel {
+ public:
+  explicit FloatKernel(const std::vector<Point3d>& points) : pts_(points) {}
+  static constexpr bool exact = false;
+
+  int orientation(int p, int q, int r, int s) {
+    ++counts_.orientation_tests;
+    return sign(det(pts_[p], pts_[q], pts_[r], pts_[s]));
+  }
+  bool equal(int p, int q) const { return pts_[p] == pts_[q]; }
+  bool collinear(int p, int q, int r) const;
+  void set_centre(int a, int b, int c, int d);
+  int centre_side(int u, int v, int x) {
+    ++counts_.orientation_tests;
+    return sign(det(pts_[u], pts_[v], centre_, pts_[x]));
+  }
+  const PredicateCounts& counts() const { return counts_; }
+
+ private:
+  static int sign(double v) { return (v > 0) - (v < 0); }
+  // det[q−p, r−p, s−p] in doubles (CGAL's orientation, unfiltered).
+  static double det(const Point3d& p, const Point3d& q, const Point3d& r, const Point3d& s) {
+    double ux = q[0] - p[0], uy = q[1] - p[1], uz = q[2] - p[2];
+    double vx = r[0] - p[0], vy = r[1] - p[1], vz = r[2] - p[2];
+    double wx = s[0] - p[0], wy = s[1] - p[1], wz = s[2] - p[2];
+    return ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx);
+  }
+  const std::vector<Point3d>& pts_;
+  Point3d centre_{};
+  PredicateCounts counts_;
+};
+
+}  // namespace kmr::hull
