@@ -33,9 +33,10 @@ bool in_pyramid(const Face& f, int x, Kernel& k) {
 template <class Kernel>
 int search_tent(const HullState& h, int q, int x, Kernel& k) {
   const int end = h.first_face[q] + h.face_count[q];
+  auto sides = k.apex_frame(q, x);  // side tests through q, sharing q − x and c − x
   for (int f = h.first_face[q]; f < end; ++f) {
-    const Face& face = h.faces[f];
-    if (k.centre_side(face.v[2], face.v[0], x) >= 0 && k.centre_side(face.v[0], face.v[1], x) >= 0) return f;
+    const Face& face = h.faces[f];  // (q, v1, v2): sides (v2, q, c) and (q, v1, c)
+    if (sides.side_before(face.v[2]) >= 0 && sides.side_after(face.v[1]) >= 0) return f;
   }
   throw ContractError("hull: no tent face of point " + std::to_string(q) + " contains the ray to " + std::to_string(x));
 }

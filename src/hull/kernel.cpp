@@ -41,6 +41,38 @@ void ExactKernel::set_centre(int a, int b, int c, int d) {
   }
   eta_ = eta;
   centre_safe_ = all_safe_ && geometry::filter_safe(centre_approx_) && std::isfinite(eta_) && eta_ < 0x1p200;
+  double m = 0;
+  for (const Point3d& p : pts_)
+    for (double x : p) m = std::max(m, std::fabs(x));
+  // |A_i|, |B_j| ≤ 2M, six products: Σ_{i≠j}|A_i||B_j| ≤ 24·M² (≤ 2^503 in the safe range).
+  centre_error_ = eta_ > 0 ? eta_ * 24 * m * m * (1 + 0x1p-40) + geometry::kOrient3dAbsBound : 0;
+}
+
+ExactKernel::ApexFrame::ApexFrame(ExactKernel& k, int apex, int x) : k_(k), apex_(apex), x_(x), fast_(k.centre_safe_) {
+  if (!fast_) return;
+  const Point3d &a = k.pts_[apex], &p = k.pts_[x], &c = k.centre_approx_;
+  const double bx = a[0] - p[0], by = a[1] - p[1], bz = a[2] - p[2];
+  const double cx = c[0] - p[0], cy = c[1] - p[1], cz = c[2] - p[2];
+  const double byz = by * cz, bzy = bz * cy, bzx = bz * cx, bxz = bx * cz, bxy = bx * cy, byx = by * cx;
+  m_[0] = byz - bzy, m_[1] = bzx - bxz, m_[2] = bxy - byx;
+  p_[0] = std::fabs(byz) + std::fabs(bzy), p_[1] = std::fabs(bzx) + std::fabs(bxz), p_[2] = std::fabs(bxy) + std::fabs(byx);
+}
+
+int ExactKernel::ApexFrame::sign_of(int y) {
+  ++k_.counts_.orientation_tests;
+  if (fast_) {
+    const Point3d &q = k_.pts_[y], &p = k_.pts_[x_];
+    const double ax = q[0] - p[0], ay = q[1] - p[1], az = q[2] - p[2];
+    const double det = ax * m_[0] + ay * m_[1] + az * m_[2];
+    const double perm = std::fabs(ax) * p_[0] + std::fabs(ay) * p_[1] + std::fabs(az) * p_[2];
+    const double err = (geometry::kOrient3dErrBound * perm + geometry::kOrient3dAbsBound + k_.centre_error_) * (1 + 0x1p-50);
+    if (det > err) return 1;
+    if (-det > err) return -1;
+  }
+  ++k_.counts_.exact_fallbacks;
+  // Shewchuk's orient3d(y, apex, c, x) = −orientation(y, apex, c, x) (CGAL's sign).
+  return -geometry::orientation(geometry::to_dyadic(k_.pts_[y]), geometry::to_dyadic(k_.pts_[apex_]), k_.centre_,
+                                geometry::to_dyadic(k_.pts_[x_]));
 }
 
 int ExactKernel::centre_side(int u, int v, int x) {

@@ -43,7 +43,29 @@ class ExactKernel {
   int centre_side(int u, int v, int x);
   const PredicateCounts& counts() const { return counts_; }
 
+  // The side tests around one tent apex k for one point x (history.hpp's search_tent asks
+  // orientation(w, k, c, x) and orientation(k, v, c, x) for many w, v): the same exact answers as
+  // centre_side, with k − x, c̃ − x and their 2×2 minors computed once. The filter evaluates
+  // det[y−x; k−x; c̃−x] by cofactors along its first row — the same operation tree as Shewchuk's
+  // orient3d (a difference times a 2×2 minor of differences, three terms summed), so the same bound
+  // (7 + 56ε)ε·P̃ + 2^-1070 holds, plus the centre term (static: η·24·M², M the largest |coordinate|).
+  class ApexFrame {
+   public:
+    ApexFrame(ExactKernel& k, int apex, int x);
+    int side_before(int w) { return -sign_of(w); }  // orientation(w, apex, c, x)
+    int side_after(int v) { return sign_of(v); }    // orientation(apex, v, c, x)
+
+   private:
+    int sign_of(int y);  // sign of det[y−x; apex−x; c̃−x] (Shewchuk's orient3d(y, apex, c, x))
+    ExactKernel& k_;
+    int apex_, x_;
+    bool fast_;
+    double m_[3], p_[3];
+  };
+  ApexFrame apex_frame(int apex, int x) { return ApexFrame(*this, apex, x); }
+
  private:
+  double centre_error_ = 0;  // η·24·M²·(1 + 2^-40): bounds |det[v−u, c−c̃, x−u]| for all inputs
   const std::vector<Point3d>& pts_;
   bool all_safe_ = true;  // every input coordinate in the filter's safe range
   bool centre_safe_ = false;
@@ -70,6 +92,18 @@ class FloatKernel {
     return sign(det(pts_[u], pts_[v], centre_, pts_[x]));
   }
   const PredicateCounts& counts() const { return counts_; }
+
+  class ApexFrame {  // plain-double twin of ExactKernel::ApexFrame
+   public:
+    ApexFrame(FloatKernel& k, int apex, int x) : k_(k), apex_(apex), x_(x) {}
+    int side_before(int w) { return k_.centre_side(w, apex_, x_); }
+    int side_after(int v) { return k_.centre_side(apex_, v, x_); }
+
+   private:
+    FloatKernel& k_;
+    int apex_, x_;
+  };
+  ApexFrame apex_frame(int apex, int x) { return ApexFrame(*this, apex, x); }
 
  private:
   static int sign(double v) { return (v > 0) - (v < 0); }

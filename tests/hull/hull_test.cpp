@@ -8,6 +8,7 @@
 #include "brute_hull.hpp"
 #include "exact/error.hpp"
 #include "hull/hull.hpp"
+#include "hull/kernel.hpp"
 #include "hull/xyz_file.hpp"
 
 using kmr::hull::Arithmetic;
@@ -151,4 +152,40 @@ TEST(Hull, ReadXyzFile) {
   refuse("1 2 nan\n", "'nan'");
   refuse("1 2 1e400\n", "not a finite double: '1e400'");
   refuse("0x10 2 3\n", "'0x10'");
+}
+
+// The centre tests (filtered, with the centre rounded to a double) equal the exact orientation
+// with the Dyadic centroid, on generic doubles and on grids where many tests are exactly zero.
+TEST(HullKernel, CentreTestsAreExact) {
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (int family = 0; family < 3; ++family) {
+    std::vector<Point3d> pts;
+    for (int i = 0; i < 40; ++i) {
+      if (family == 0) pts.push_back({u(rng), u(rng), u(rng)});
+      else if (family == 1) pts.push_back({double(rng() % 5), double(rng() % 5), double(rng() % 5)});
+      else pts.push_back({0.1 * double(rng() % 5), 0.1 * double(rng() % 5), 1e-3 * double(rng() % 5)});
+    }
+    pts[0] = {0, 0, 0}, pts[1] = {1, 0, 0}, pts[2] = {0, 1, 0}, pts[3] = {0.3, 0.7, 0.9};
+    kmr::hull::ExactKernel k(pts);
+    k.set_centre(0, 1, 2, 3);
+    using kmr::exact::Dyadic;
+    kmr::geometry::Point<3, Dyadic> c;
+    for (int j = 0; j < 3; ++j)
+      c[j] = (Dyadic::from_double(pts[0][j]) + Dyadic::from_double(pts[1][j]) + Dyadic::from_double(pts[2][j]) +
+              Dyadic::from_double(pts[3][j])) * Dyadic(kmr::exact::Integer(1), -2);
+    int zeros = 0;
+    for (int rep = 0; rep < 3000; ++rep) {
+      int a = int(rng() % 40), x = int(rng() % 40), y = int(rng() % 40);
+      auto d = [&](int i) { return kmr::geometry::to_dyadic(pts[i]); };
+      int want_before = kmr::geometry::orientation(d(y), d(a), c, d(x));
+      int want_after = kmr::geometry::orientation(d(a), d(y), c, d(x));
+      zeros += want_before == 0;
+      auto frame = k.apex_frame(a, x);
+      ASSERT_EQ(frame.side_before(y), want_before) << family << " " << rep;
+      ASSERT_EQ(frame.side_after(y), want_after) << family << " " << rep;
+      ASSERT_EQ(k.centre_side(y, a, x), want_before) << family << " " << rep;
+    }
+    if (family == 1) EXPECT_GT(zeros, 100);
+  }
 }
