@@ -52,15 +52,26 @@ class ExactKernel {
   class ApexFrame {
    public:
     ApexFrame(ExactKernel& k, int apex, int x);
-    int side_before(int w) { return -sign_of(w); }  // orientation(w, apex, c, x)
-    int side_after(int v) { return sign_of(v); }    // orientation(apex, v, c, x)
+    int side_before(int w) { return -cached(w); }  // orientation(w, apex, c, x)
+    int side_after(int v) { return cached(v); }    // orientation(apex, v, c, x)
 
    private:
+    // Each ring vertex y of the tent is v1 of one face and v2 of the next: both tests are the sign
+    // of one determinant, computed once per search.
+    int cached(int y) {
+      for (int i = 0; i < used_; ++i)
+        if (seen_[i] == y) return sign_[i];
+      int s = sign_of(y);
+      if (used_ < kCache) seen_[used_] = y, sign_[used_++] = s;
+      return s;
+    }
     int sign_of(int y);  // sign of det[y−x; apex−x; c̃−x] (Shewchuk's orient3d(y, apex, c, x))
+    static constexpr int kCache = 16;
     ExactKernel& k_;
     int apex_, x_;
     bool fast_;
     double m_[3], p_[3];
+    int used_ = 0, seen_[kCache], sign_[kCache];
   };
   ApexFrame apex_frame(int apex, int x) { return ApexFrame(*this, apex, x); }
 
@@ -95,13 +106,30 @@ class FloatKernel {
 
   class ApexFrame {  // plain-double twin of ExactKernel::ApexFrame
    public:
-    ApexFrame(FloatKernel& k, int apex, int x) : k_(k), apex_(apex), x_(x) {}
-    int side_before(int w) { return k_.centre_side(w, apex_, x_); }
-    int side_after(int v) { return k_.centre_side(apex_, v, x_); }
+    ApexFrame(FloatKernel& k, int apex, int x) : k_(k), x_(x) {
+      const Point3d &a = k.pts_[apex], &p = k.pts_[x], &c = k.centre_;
+      const double bx = a[0] - p[0], by = a[1] - p[1], bz = a[2] - p[2];
+      const double cx = c[0] - p[0], cy = c[1] - p[1], cz = c[2] - p[2];
+      m_[0] = by * cz - bz * cy, m_[1] = bz * cx - bx * cz, m_[2] = bx * cy - by * cx;
+    }
+    int side_before(int w) { return -cached(w); }
+    int side_after(int v) { return cached(v); }
 
    private:
+    int cached(int y) {
+      for (int i = 0; i < used_; ++i)
+        if (seen_[i] == y) return sign_[i];
+      ++k_.counts_.orientation_tests;
+      const Point3d &q = k_.pts_[y], &p = k_.pts_[x_];
+      int s = sign((q[0] - p[0]) * m_[0] + (q[1] - p[1]) * m_[1] + (q[2] - p[2]) * m_[2]);
+      if (used_ < kCache) seen_[used_] = y, sign_[used_++] = s;
+      return s;
+    }
+    static constexpr int kCache = 16;
     FloatKernel& k_;
-    int apex_, x_;
+    int x_;
+    double m_[3];
+    int used_ = 0, seen_[kCache], sign_[kCache];
   };
   ApexFrame apex_frame(int apex, int x) { return ApexFrame(*this, apex, x); }
 
