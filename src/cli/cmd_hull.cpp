@@ -2,6 +2,7 @@
 #include <chrono>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
@@ -30,7 +31,13 @@ int hull_command(const Argv& argv) {
   if (!file) throw InputError("cannot open '" + name + "'");
   auto points = hull::read_xyz(file, name);
   auto start = std::chrono::steady_clock::now();
-  hull::Hull h = hull::convex_hull(points, args.has("float") ? hull::Arithmetic::floating : hull::Arithmetic::exact);
+  hull::Hull h;
+  try {
+    h = hull::convex_hull(points, args.has("float") ? hull::Arithmetic::floating : hull::Arithmetic::exact);
+  } catch (const ContractError& e) {
+    if (!args.has("float")) throw;
+    throw std::runtime_error(std::string("the --float baseline failed (it is not robust; run without --float): ") + e.what());
+  }
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << "{\"n\": " << h.n << ", \"vertices\": [";
   for (std::size_t i = 0; i < h.vertices.size(); ++i) std::cout << (i ? ", " : "") << h.vertices[i];
