@@ -20,6 +20,7 @@ const Command kCommands[] = {
     {"roots", "isolate the real roots of a polynomial to lattice intervals", kmr::cli::roots_command},
     {"simulate", "run a kinetic simulation on the lattice (kinetic sorting)", kmr::cli::simulate_command},
     {"wellspaced", "dynamic well-spaced point sets (thesis Ch. 3): StableWS, updates, checks", kmr::cli::wellspaced_command},
+    {"hull", "the static 3D convex hull of thesis Ch. 2 (exact, or --float)", kmr::cli::hull_command},
     {"bench", "measure performance (bench sac: self-adjusting programs vs static twins)", kmr::cli::bench_command},
 };
 

@@ -62,5 +62,30 @@ expect_error bench-too-big 'map at n=100000000 needs an estimated' -- bench sac 
 expect_error bench-too-big-sort 'quicksort at n=100000000 needs an estimated' -- bench sac --n 100000000 --program quicksort
 expect_error unknown-command "unknown command 'frob'" -- frob
 
+# kmr hull (thesis §2.2). A tetrahedron: outward normals −z, −y, −x, (1,1,1), counter-clockwise from outside.
+printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n' >"$tmp/tet.xyz"
+expect_out hull-tet '{"n": 4, "vertices": [0, 1, 2, 3], "facets": [[0, 1, 3], [0, 2, 1], [0, 3, 2], [1, 2, 3]]}' -- hull "$tmp/tet.xyz"
+expect_out hull-tet-float '{"n": 4, "vertices": [0, 1, 2, 3], "facets": [[0, 1, 3], [0, 2, 1], [0, 3, 2], [1, 2, 3]]}' -- hull "$tmp/tet.xyz" --float
+# The cube [0,2]^3 with its centre (8), face centres (9-12) and edge midpoints (13, 14): only the corners
+# are vertices; each square is a fan from its lexicographically smallest corner (z = 0: [0,2,3], [0,3,1]).
+printf '# cube\n0 0 0\n2 0 0\n0 2 0\n2 2 0\n0 0 2\n2 0 2\n0 2 2\n2 2 2\n\n1 1 1  # centre\n1 1 0\n1 0 1\n0 1 1\n2 1 1\n1 0 0\n0 1 0\n' >"$tmp/cube.xyz"
+expect_out hull-cube '{"n": 15, "vertices": [0, 1, 2, 3, 4, 5, 6, 7], "facets": [[0, 1, 5], [0, 2, 3], [0, 3, 1], [0, 4, 6], [0, 5, 4], [0, 6, 2], [1, 3, 7], [1, 7, 5], [2, 6, 7], [2, 7, 3], [4, 5, 7], [4, 7, 6]]}' -- hull "$tmp/cube.xyz"
+# Duplicates: 3 and 5 repeat 0 and 1, 6 repeats 4; the lowest index names each point; decimals as doubles.
+printf '1.0 0 0\n0 0 0\n0 1 0\n1 0 0\n0 0 1e0\n0.0 -0 0\n0 0 1\n' >"$tmp/dup.xyz"
+expect_out hull-dup '{"n": 7, "vertices": [0, 1, 2, 4], "facets": [[0, 1, 2], [0, 2, 4], [0, 4, 1], [1, 4, 2]]}' -- hull "$tmp/dup.xyz"
+printf '0 0 0\n1 0 0\n0 1 0\n3 3 0\n' >"$tmp/flat.xyz"
+expect_error hull-coplanar 'all points are coplanar' -- hull "$tmp/flat.xyz"
+printf '0 0 0\n1 1 1\n2 2 2\n' >"$tmp/line.xyz"
+expect_error hull-collinear 'all points are collinear' -- hull "$tmp/line.xyz"
+printf '0 0 0\n1 0 0\n0 1 0\n0 0 inf\n' >"$tmp/inf.xyz"
+expect_error hull-inf 'inf.xyz:4: not a decimal number' -- hull "$tmp/inf.xyz"
+printf '0 0 0\n1 0 0\n0 1 0\n0 0 1e999\n' >"$tmp/big.xyz"
+expect_error hull-overflow "big.xyz:4: not a finite double: '1e999'" -- hull "$tmp/big.xyz"
+printf '0 0 0\n1 0\n' >"$tmp/arity.xyz"
+expect_error hull-arity 'arity.xyz:2: expected 3 numbers' -- hull "$tmp/arity.xyz"
+expect_error hull-missing 'cannot open' -- hull "$tmp/none.xyz"
+"$kmr" hull "$tmp/cube.xyz" --stats "$tmp/stats.json" >/dev/null && grep -q '"inserted": ' "$tmp/stats.json" \
+  && passed=$((passed+1)) || { failed=$((failed+1)); echo "FAIL hull-stats"; }
+
 echo "cli: $passed passed, $failed failed"
 [ $failed -eq 0 ]
