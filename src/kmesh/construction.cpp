@@ -16,12 +16,13 @@ Dyadic sqdist(const Point2& p, const Point2& q) { return geometry::squared_dista
 int nearest_within(const Spanner& S, const Point2& p, const std::vector<int>& cands, std::int64_t k, Rank l,
                    Rank min_top) {
   int best = -1;
-  Dyadic bd;
+  IPoint pe = enclose(p);
   for (int x : cands) {
     ++S.ops;
-    if (S.top(x) < min_top || !within(p, S.position(x), k, l)) continue;
-    Dyadic d = sqdist(p, S.position(x));
-    if (best < 0 || d < bd) best = x, bd = d;  // cands are sorted, so ties keep the smaller id
+    if (S.top(x) < min_top || !within_filtered(p, pe, S.position(x), S.enclosure(x), k, l)) continue;
+    // cands are sorted, so ties keep the smaller id
+    if (best < 0 || compare_distance(p, pe, S.position(x), S.enclosure(x), S.position(best), S.enclosure(best)) < 0)
+      best = x;
   }
   return best;
 }
@@ -39,10 +40,11 @@ struct Builder {
   bool ball_empty(const Point2& s, Rank l, int h, std::map<Rank, std::vector<int>>& N) {
     N[l] = S.centers_near(s, l, h);
     for (Rank r = l - 1; r >= l - 7; --r) N[r] = S.centers_near_below(s, r, N[r + 1]);
+    IPoint se = enclose(s);
     for (Rank r = l - 6; r <= l - 3; ++r)
       for (int x : N[r]) {
         ++S.ops;
-        if (within(s, S.position(x), 1, l - 2)) return false;
+        if (within_filtered(s, se, S.position(x), S.enclosure(x), 1, l - 2)) return false;
       }
     return true;
   }

@@ -6,11 +6,23 @@
 #include "exact/error.hpp"
 #include "geometry/predicates.hpp"
 #include "kmesh/construction.hpp"
+#include "kmesh/filtered.hpp"
 
 namespace kmr::kmesh {
 namespace {
 
 int orient(const Point2& a, const Point2& b, const Point2& c) { return geometry::orientation<Dyadic>(a, b, c); }
+
+// Filtered forms over vertex ids with cached enclosures.
+struct Geo {
+  const std::vector<Point2>& p;
+  const std::vector<IPoint>& e;
+  int orient(int a, int b, int c) const { return orientation_filtered(p[a], e[a], p[b], e[b], p[c], e[c]); }
+  int incircle(int a, int b, int c, int t) const {
+    int s = side_of_circle_filtered(p[a], e[a], p[b], e[b], p[c], e[c], p[t], e[t]);
+    return s != 0 ? s : perturbed_side_of_circle(p[a], a, p[b], b, p[c], c, p[t], t);
+  }
+};
 
 }  // namespace
 
@@ -30,28 +42,33 @@ int perturbed_side_of_circle(const Point2& p, int ip, const Point2& q, int iq, c
 
 std::vector<int> delaunay_star(int s, const std::vector<int>& cands, const std::vector<Point2>& pos,
                                bool& closed, std::uint64_t& ops) {
+  std::vector<IPoint> e(pos.size());
+  for (int c : cands) e[c] = enclose(pos[c]);
+  e[s] = enclose(pos[s]);
+  return delaunay_star(s, cands, pos, e, closed, ops);
+}
+
+std::vector<int> delaunay_star(int s, const std::vector<int>& cands, const std::vector<Point2>& pos,
+                               const std::vector<IPoint>& enc, bool& closed, std::uint64_t& ops) {
+  Geo g{pos, enc};
   closed = false;
   std::vector<int> out;
   if (cands.empty()) return out;
   const Point2& ps = pos[s];
   int a0 = -1;
-  Dyadic bd;
-  for (int c : cands) {
-    Dyadic d = geometry::squared_distance<2, Dyadic>(ps, pos[c]);
-    if (a0 < 0 || d < bd || (d == bd && c < a0)) a0 = c, bd = d;
-  }
+  for (int c : cands)  // cands sorted: ties keep the smaller id
+    if (a0 < 0 || compare_distance(ps, enc[s], pos[c], enc[c], pos[a0], enc[a0]) < 0) a0 = c;
   // side = +1: the triangle (s, a, b) left of s→a; side = −1: the triangle (s, b, a) right of it.
   auto next = [&](int a, int side) {
     int best = -1;
     for (int c : cands) {
       ++ops;
-      if (c == a || orient(ps, pos[a], pos[c]) != side) continue;
+      if (c == a || g.orient(s, a, c) != side) continue;
       if (best < 0) {
         best = c;
         continue;
       }
-      int in = side > 0 ? perturbed_side_of_circle(ps, s, pos[a], a, pos[best], best, pos[c], c)
-                        : perturbed_side_of_circle(ps, s, pos[best], best, pos[a], a, pos[c], c);
+      int in = side > 0 ? g.incircle(s, a, best, c) : g.incircle(s, best, a, c);
       if (in > 0) best = c;
     }
     return best;
@@ -86,7 +103,8 @@ std::vector<std::array<int, 3>> delaunay_from_candidates(Mesh& m) {
   const Spanner& S = m.spanner;
   const int N = static_cast<int>(S.size());
   std::vector<Point2> pos(N);
-  for (int i = 0; i < N; ++i) pos[i] = S.position(i);
+  std::vector<IPoint> enc(N);
+  for (int i = 0; i < N; ++i) pos[i] = S.position(i), enc[i] = S.enclosure(i);
   std::map<std::array<int, 3>, int> seen;
   for (int s = 0; s < N; ++s) {
     Rank l = m.info[s].rank;
@@ -94,12 +112,12 @@ std::vector<std::array<int, 3>> delaunay_from_candidates(Mesh& m) {
     for (Rank r = l - 6; r <= l - 3; ++r)
       for (int x : S.neighbors(s, r)) {
         ++S.ops;
-        if (within(pos[s], pos[x], 9, l - 2)) V.push_back(x);
+        if (within_filtered(pos[s], enc[s], pos[x], enc[x], 9, l - 2)) V.push_back(x);
       }
     std::sort(V.begin(), V.end());
     V.erase(std::unique(V.begin(), V.end()), V.end());
     bool closed = false;
-    std::vector<int> star = delaunay_star(s, V, pos, closed, S.ops);
+    std::vector<int> star = delaunay_star(s, V, pos, enc, closed, S.ops);
     std::size_t k = star.size();
     for (std::size_t i = 0; i + 1 < k || (closed && i < k); ++i) {
       std::array<int, 3> t{s, star[i], star[(i + 1) % k]};

@@ -31,6 +31,10 @@ int perturbed_side_of_circle(const Point2& p, int ip, const Point2& q, int iq, c
 std::vector<int> delaunay_star(int s, const std::vector<int>& cands, const std::vector<Point2>& pos,
                                bool& closed, std::uint64_t& ops);
 
+struct IPoint;
+std::vector<int> delaunay_star(int s, const std::vector<int>& cands, const std::vector<Point2>& pos,
+                               const std::vector<IPoint>& enclosures, bool& closed, std::uint64_t& ops);
+
 // The third stage of Fig. 4.2 over a constructed mesh.
 std::vector<std::array<int, 3>> delaunay_from_candidates(Mesh& mesh);
 

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "geometry/predicates.hpp"
+#include "kmesh/filtered.hpp"
 
 namespace kmr::kmesh {
 namespace {
@@ -48,38 +49,61 @@ std::vector<Dyadic> nn2(const std::vector<Point2>& p) {
 
 Rank lowest_neighbor_rank(const Point2& a, const Point2& b) { return min_rank_within(a, b, kC); }
 
+// Vertices sorted by x, for exact window scans: every vertex within k·2^l of s has |x − s.x| ≤ k·2^l.
+struct XIndex {
+  std::vector<std::pair<Dyadic, int>> v;
+  explicit XIndex(const Spanner& S) {
+    for (std::size_t i = 0; i < S.size(); ++i) v.push_back({S.position(static_cast<int>(i))[0], static_cast<int>(i)});
+    std::sort(v.begin(), v.end());
+  }
+  // Calls f(id) for every vertex with |x − p.x| ≤ k·2^l, in x order.
+  template <class F>
+  void window(const Point2& p, std::int64_t k, Rank l, F f) const {
+    Dyadic r(exact::Integer(k) * kScale, l);
+    auto it = std::lower_bound(v.begin(), v.end(), std::pair<Dyadic, int>{p[0] - r, -1});
+    Dyadic hi = p[0] + r;
+    for (; it != v.end() && it->first <= hi; ++it) f(it->second);
+  }
+};
+
 }  // namespace
 
 CheckResult check_spanner(const Spanner& S) {
   CheckResult r{"spanner", {}, 0};
   const int n = static_cast<int>(S.size());
+  // S1 and the expected number of (rank, neighbour) entries of every vertex, pair by pair.
+  std::vector<std::size_t> expected(n, 0), stored(n, 0);
   for (int x = 0; x < n; ++x)
     for (int y = x + 1; y < n; ++y) {
-      Dyadic d = sqdist(S.position(x), S.position(y));
       Rank mt = std::min(S.top(x), S.top(y));
-      if (d.sign() == 0) {
+      if (!within_filtered(S.position(x), S.enclosure(x), S.position(y), S.enclosure(y), kC, mt)) continue;
+      if (S.position(x) == S.position(y)) {
         add(r, "S1: vertices " + std::to_string(x) + " and " + std::to_string(y) + " coincide");
         continue;
       }
-      if (d <= threshold2(1, mt))
+      if (within_filtered(S.position(x), S.enclosure(x), S.position(y), S.enclosure(y), 1, mt))
         add(r, "S1 separation: " + std::to_string(x) + ", " + std::to_string(y) + " are both " +
                    std::to_string(mt) + "-centers within 2^" + std::to_string(mt));
-      // S3: neighbours exactly at the ranks [l0, mt].
       Rank l0 = lowest_neighbor_rank(S.position(x), S.position(y));
-      for (Rank l = std::min(l0, mt + 1) - 1; l <= mt; ++l) {
-        bool want = l >= l0;
-        auto& nx = S.neighbors(x, l);
-        auto& ny = S.neighbors(y, l);
-        bool hx = std::binary_search(nx.begin(), nx.end(), y), hy = std::binary_search(ny.begin(), ny.end(), x);
-        if (hx != want || hy != want)
-          add(r, "S3 neighbours: " + std::to_string(x) + ", " + std::to_string(y) + " at rank " + std::to_string(l) +
-                     (want ? " missing" : " wrongly listed"));
-      }
+      expected[x] += static_cast<std::size_t>(mt - l0 + 1);
+      expected[y] += static_cast<std::size_t>(mt - l0 + 1);
     }
-  // Neighbour lists only name centers at ranks they are centers at.
+  // S3: every stored entry is right (a center pair within c·2^l, no repeat); with the counts equal,
+  // the lists are exactly the brute-force ones.
   for (int x = 0; x < n; ++x)
-    for (Rank l = S.top(x) + 1; l <= S.top(x) + 3; ++l)
-      if (!S.neighbors(x, l).empty()) add(r, "S3: vertex " + std::to_string(x) + " has neighbours above its top rank");
+    for (auto& [l, list] : S.all_neighbors(x))
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        int y = list[i];
+        if ((i > 0 && list[i - 1] >= y) || y == x || y < 0 || y >= n || S.top(x) < l || S.top(y) < l ||
+            !within(S.position(x), S.position(y), kC, l)) {
+          add(r, "S3 neighbours: vertex " + std::to_string(x) + " lists " + std::to_string(y) + " wrongly at rank " + std::to_string(l));
+          continue;
+        }
+        ++stored[x];
+      }
+  for (int x = 0; x < n; ++x)
+    if (stored[x] != expected[x])
+      add(r, "S3 neighbours: vertex " + std::to_string(x) + " lists " + std::to_string(stored[x]) + " (rank, neighbour) pairs, brute force finds " + std::to_string(expected[x]));
   // S2 covering and parents; S4 kids.
   std::map<std::pair<int, Rank>, std::vector<int>> kids;
   for (int x = 0; x < n; ++x) {
@@ -99,24 +123,28 @@ CheckResult check_spanner(const Spanner& S) {
     else
       kids[{p, S.top(x)}].push_back(x);
   }
+  std::size_t listed = 0;
   for (int y = 0; y < n; ++y)
-    for (Rank l = S.top(y) - 80; l < S.top(y); ++l) {
-      auto k = S.kids(y, l);
+    for (auto& [l, k0] : S.all_kids(y)) {
+      auto k = k0;
       std::sort(k.begin(), k.end());
-      auto& want = kids[{y, l}];
-      if (k != want) add(r, "S4 kids of " + std::to_string(y) + " at rank " + std::to_string(l));
+      listed += k.size();
+      if (!k.empty() && k != kids[{y, l}]) add(r, "S4 kids of " + std::to_string(y) + " at rank " + std::to_string(l));
     }
+  if (listed != static_cast<std::size_t>(n - 1)) add(r, "S4: " + std::to_string(listed) + " kids listed for " + std::to_string(n - 1) + " non-root vertices");
   return r;
 }
 
 CheckResult check_ball_empty(const Mesh& m) {
   CheckResult r{"L4.2.4", {}, 0};
   const Spanner& S = m.spanner;
+  XIndex X(S);
   for (auto& c : m.considered) {
     Point2 s = satellite_position(S.position(c.nucleus), c.ray, c.rank);
     bool empty = true;
-    for (int x = 0; x < c.existing && empty; ++x)
-      if (within(s, S.position(x), 1, c.rank - 2)) empty = false;
+    X.window(s, 1, c.rank - 2, [&](int x) {
+      if (x < c.existing && within(s, S.position(x), 1, c.rank - 2)) empty = false;
+    });
     if (empty != c.converted)
       add(r, "satellite (nucleus " + std::to_string(c.nucleus) + ", ray " + std::to_string(c.ray) + ", rank " +
                  std::to_string(c.rank) + "): ball " + (empty ? "empty" : "not empty") + " but " +
@@ -128,6 +156,7 @@ CheckResult check_ball_empty(const Mesh& m) {
 CheckResult check_independent_set(const Mesh& m) {
   CheckResult r{"L4.2.5", {}, 0};
   const Spanner& S = m.spanner;
+  XIndex X(S);
   std::map<Rank, std::vector<const Considered*>> by_rank;
   for (auto& c : m.considered) by_rank[c.rank].push_back(&c);
   for (auto& [l, cs] : by_rank) {
@@ -137,8 +166,9 @@ CheckResult check_independent_set(const Mesh& m) {
     for (auto* c : cs) {
       Point2 s = satellite_position(S.position(c->nucleus), c->ray, c->rank);
       bool empty = true;
-      for (int x = 0; x < start && empty; ++x)
-        if (within(s, S.position(x), 1, l - 2)) empty = false;
+      X.window(s, 1, l - 2, [&](int x) {
+        if (x < start && within(s, S.position(x), 1, l - 2)) empty = false;
+      });
       if (!empty) {
         if (c->converted) add(r, "rank " + std::to_string(l) + ": converted a satellite outside the proximity graph");
         continue;
@@ -198,8 +228,9 @@ CheckResult check_min_ranks(const Mesh& m) {
     Rank lam = S.top(s) + 1;
     for (int x = 0; x < n; ++x) {
       if (x == s) continue;
-      Rank l0 = lowest_neighbor_rank(S.position(s), S.position(x));
-      if (l0 <= std::min(S.top(s), S.top(x))) lam = std::min(lam, l0);
+      Rank mt = std::min(S.top(s), S.top(x));
+      if (!within_filtered(S.position(s), S.enclosure(s), S.position(x), S.enclosure(x), kC, mt)) continue;
+      lam = std::min(lam, lowest_neighbor_rank(S.position(s), S.position(x)));
     }
     Rank l = m.info[s].rank;
     if (lam < l - 6 || lam > l - 3)
@@ -242,7 +273,8 @@ CheckResult check_delaunay(const Mesh& m) {
         const Point2& q = p[ord[j]];
         Dyadic dx = (q[0] - a[0]) * D;
         if (dx * dx > four_r2d2) break;
-        if (geometry::side_of_oriented_circle<Dyadic>(a, b, c, q) > 0) {
+        if (side_of_circle_filtered(a, m.spanner.enclosure(t[0]), b, m.spanner.enclosure(t[1]), c,
+                                    m.spanner.enclosure(t[2]), q, m.spanner.enclosure(ord[j])) > 0) {
           add(r, "vertex " + std::to_string(ord[j]) + " inside the circumcircle of a triangle");
         }
       }

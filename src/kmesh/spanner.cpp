@@ -1,9 +1,11 @@
 #include "kmesh/spanner.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "exact/error.hpp"
 #include "geometry/predicates.hpp"
+#include "kmesh/filtered.hpp"
 
 namespace kmr::kmesh {
 namespace {
@@ -24,14 +26,28 @@ Dyadic threshold2(std::int64_t k, Rank l) {
   return Dyadic(kl * kl, 2 * l);
 }
 
-bool within(const Point2& p, const Point2& q, std::int64_t k, Rank l) { return sqdist(p, q) <= threshold2(k, l); }
+bool within_exact(const Point2& p, const Point2& q, std::int64_t k, Rank l) {
+  return sqdist(p, q) <= threshold2(k, l);
+}
+
+bool within(const Point2& p, const Point2& q, std::int64_t k, Rank l) {
+  return within_filtered(p, enclose(p), q, enclose(q), k, l);
+}
 
 Rank min_rank_within(const Point2& p, const Point2& q, std::int64_t k) {
-  Dyadic d2 = sqdist(p, q);
-  KMR_CHECK(d2.sign() > 0, "min_rank_within of equal points");
-  std::int64_t lg = exact::bit_length(d2.mantissa()) + d2.exponent();  // 2^(lg−1) ≤ d2 < 2^lg
-  std::int64_t lk = exact::bit_length(exact::Integer(k) * k * kScale * kScale);
-  Rank l = (lg - lk) / 2 - 2;
+  KMR_CHECK(p != q, "min_rank_within of equal points");
+  // A starting guess from doubles (only a guess: the loops below decide exactly).
+  double dx = p[0].to_double() - q[0].to_double(), dy = p[1].to_double() - q[1].to_double();
+  double g = 0.5 * std::log2(dx * dx + dy * dy) - std::log2(double(k) * double(kScale));
+  Rank l;
+  if (std::isfinite(g) && std::abs(g) < 1e6) {
+    l = static_cast<Rank>(std::ceil(g));
+  } else {
+    Dyadic d2 = sqdist(p, q);
+    std::int64_t lg = exact::bit_length(d2.mantissa()) + d2.exponent();
+    std::int64_t lk = exact::bit_length(exact::Integer(k) * k * kScale * kScale);
+    l = (lg - lk) / 2 - 2;
+  }
   while (!within(p, q, k, l)) ++l;
   while (within(p, q, k, l - 1)) --l;
   return l;
@@ -77,9 +93,10 @@ void Spanner::add_neighbor_pair(int x, int y, Rank l) {
 
 std::vector<int> Spanner::centers_near_below(const Point2& p, Rank l, const std::vector<int>& above) const {
   std::vector<int> out;
+  IPoint pe = enclose(p);
   auto consider = [&](int y) {
     ++ops;
-    if (within(p, nodes_[y].p, kC, l)) out.push_back(y);
+    if (within_filtered(p, pe, nodes_[y].p, nodes_[y].e, kC, l)) out.push_back(y);
   };
   for (int z : above) {
     consider(z);
@@ -92,7 +109,7 @@ std::vector<int> Spanner::centers_near_below(const Point2& p, Rank l, const std:
 
 std::vector<int> Spanner::centers_near(const Point2& p, Rank l, int hint) const {
   KMR_CHECK(nodes_[hint].top >= l + 1, "centers_near: hint is not an (l+1)-center");
-  KMR_CHECK(within(p, nodes_[hint].p, 15, l), "centers_near: hint is farther than 15·2^l");
+  KMR_CHECK(within_filtered(p, enclose(p), nodes_[hint].p, nodes_[hint].e, 15, l), "centers_near: hint is farther than 15·2^l");
   std::vector<int> family = neighbors(hint, l + 1);
   family.push_back(hint);
   return centers_near_below(p, l, family);
@@ -103,7 +120,7 @@ Spanner Spanner::build(const std::vector<Point2>& pts, Rank extra_top) {
   const int n = static_cast<int>(pts.size());
   KMR_CHECK(n >= 1, "Spanner::build of no points");
   s.nodes_.resize(n);
-  for (int i = 0; i < n; ++i) s.nodes_[i].p = pts[i];
+  for (int i = 0; i < n; ++i) s.nodes_[i].p = pts[i], s.nodes_[i].e = enclose(pts[i]);
   Rank big = 0;
   for (int w = 1; w < n; ++w) big = (w == 1) ? min_rank_within(pts[0], pts[w], 1)
                                              : std::max(big, min_rank_within(pts[0], pts[w], 1));
@@ -118,15 +135,14 @@ Spanner Spanner::build(const std::vector<Point2>& pts, Rank extra_top) {
     std::vector<int> still;
     for (int w : remaining) {
       int a = anchor[w], best = -1;
-      Dyadic bestd;
       std::vector<int> family = s.neighbors(a, l + 1);
       family.push_back(a);
       for (int z : family) {
         auto look = [&](int x) {
           ++s.ops;
-          if (!within(pts[w], pts[x], 1, l)) return;
-          Dyadic d = sqdist(pts[w], pts[x]);
-          if (best < 0 || d < bestd || (d == bestd && x < best)) best = x, bestd = d;
+          if (!within_filtered(pts[w], s.nodes_[w].e, pts[x], s.nodes_[x].e, 1, l)) return;
+          int c = best < 0 ? -1 : compare_distance(pts[w], s.nodes_[w].e, pts[x], s.nodes_[x].e, pts[best], s.nodes_[best].e);
+          if (best < 0 || c < 0 || (c == 0 && x < best)) best = x;
         };
         look(z);
         for (int x : s.kids(z, l)) look(x);
@@ -152,7 +168,7 @@ Spanner Spanner::build(const std::vector<Point2>& pts, Rank extra_top) {
       for (int z : family) {
         auto look = [&](int y) {
           ++s.ops;
-          if (y > x && within(pts[x], pts[y], kC, l)) s.add_neighbor_pair(x, y, l), any = true;
+          if (y > x && within_filtered(pts[x], s.nodes_[x].e, pts[y], s.nodes_[y].e, kC, l)) s.add_neighbor_pair(x, y, l), any = true;
         };
         look(z);
         for (int y : s.kids(z, l)) look(y);
@@ -166,7 +182,7 @@ Spanner Spanner::build(const std::vector<Point2>& pts, Rank extra_top) {
 int Spanner::insert(const Point2& p, Rank top, const std::map<Rank, std::vector<int>>& nbrs, int parent,
                     int proxy) {
   int id = static_cast<int>(nodes_.size());
-  nodes_.push_back(Node{p, top, parent, {}, {}});
+  nodes_.push_back(Node{p, enclose(p), top, parent, {}, {}});
   for (auto& [r, list] : nbrs) {
     KMR_CHECK(r <= top, "insert: neighbours above the top rank");
     for (int y : list) add_neighbor_pair(id, y, r);

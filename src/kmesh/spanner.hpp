@@ -25,6 +25,7 @@
 #include <map>
 #include <vector>
 
+#include "kmesh/filtered.hpp"
 #include "kmesh/satellites.hpp"
 
 namespace kmr::kmesh {
@@ -50,12 +51,15 @@ class Spanner {
 
   std::size_t size() const { return nodes_.size(); }
   const Point2& position(int x) const { return nodes_[x].p; }
+  const IPoint& enclosure(int x) const { return nodes_[x].e; }
   Rank top(int x) const { return nodes_[x].top; }
   int parent(int x) const { return nodes_[x].parent; }
   Rank top_rank() const { return top_rank_; }
   Rank lambda() const { return lambda_; }  // Λ of the input
   int root() const { return 0; }
   const std::vector<int>& neighbors(int x, Rank l) const;
+  const std::map<Rank, std::vector<int>>& all_neighbors(int x) const { return nodes_[x].nbrs; }
+  const std::map<Rank, std::vector<int>>& all_kids(int x) const { return nodes_[x].kids; }
   const std::vector<int>& kids(int y, Rank l) const;
   // The lowest rank where x has a neighbour (its minimum rank λ_x), or top(x)+1 if none.
   Rank min_rank(int x) const;
@@ -79,6 +83,7 @@ class Spanner {
  private:
   struct Node {
     Point2 p;
+    IPoint e;  // enclosure of p (kmesh/filtered.hpp)
     Rank top = 0;
     int parent = -1;
     std::map<Rank, std::vector<int>> nbrs;

@@ -62,10 +62,10 @@ TEST(Construction, L4_2_AllLemmasOnRandomAndClustered) {
   std::mt19937_64 rng(11);
   std::uniform_int_distribution<int> d(0, 1000);
   std::vector<InputPoint> in;
-  for (int i = 0; i < 25; ++i) in.push_back({Integer(d(rng)), Integer(d(rng))});
+  for (int i = 0; i < 14; ++i) in.push_back({Integer(d(rng)), Integer(d(rng))});
   std::sort(in.begin(), in.end());
   in.erase(std::unique(in.begin(), in.end()), in.end());
-  expect_all_hold(construct(in), "random 25");
+  expect_all_hold(construct(in), "random 14");
   // Spread 2^30: a tight cluster and a far point.
   expect_all_hold(construct(pts({{0, 0}, {1, 0}, {0, 1}, {1LL << 30, 1LL << 29}})), "spread 2^30");
 }
