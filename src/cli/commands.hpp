@@ -13,5 +13,6 @@ int roots_command(const Argv& args);
 int simulate_command(const Argv& args);
 int bench_command(const Argv& args);
 int wellspaced_command(const Argv& args);
+int kmesh_command(const Argv& args);
 
 }  // namespace kmr::cli

@@ -19,6 +19,7 @@ const Command kCommands[] = {
     {"roots", "isolate the real roots of a polynomial to lattice intervals", kmr::cli::roots_command},
     {"simulate", "run a kinetic simulation on the lattice (kinetic sorting)", kmr::cli::simulate_command},
     {"wellspaced", "dynamic well-spaced point sets (thesis Ch. 3): StableWS, updates, checks", kmr::cli::wellspaced_command},
+    {"kmesh", "kinetic mesh refinement in 2D (thesis Ch. 4): the static construction of Fig. 4.2, checks", kmr::cli::kmesh_command},
     {"bench", "measure performance (bench sac: self-adjusting programs vs static twins)", kmr::cli::bench_command},
 };
 
