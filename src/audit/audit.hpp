@@ -39,6 +39,7 @@ std::vector<Check> roots_checks();
 std::vector<Check> kinetic_checks();
 std::vector<Check> sac_checks();
 std::vector<Check> wellspaced_checks();
+std::vector<Check> kmesh_checks();
 
 // A measured figure as text with 3 significant digits (one format for every check).
 std::string fmt(double x);
