@@ -1,6 +1,7 @@
 // Chapter 4 claims (kinetic mesh refinement in 2D; static construction of Fig. 4.2 only) for
 // `kmr audit`. Asymptotic claims are reported as ratios over growing inputs with the claim beside
-// them; the kinetic/dynamic claims (T4.3.7, L4.4.*) have no check because §4.3 is not implemented.
+// them; the kinetic/dynamic claims (T4.3.7, L4.3.*, L4.4.1) have no check because §4.3 is not
+// implemented; Fig. 4.6 (L4.4.2–L4.4.4) is measured on from-scratch snapshots.
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -108,11 +109,48 @@ Verdict l4211(const Options& o) {
   return v;
 }
 
+// Fig. 4.6 (§4.4): two rows of points, spacing 1 and vertical gap ε, the lower row moving by (1, 0).
+// Snapshots at an integer time (pairs ε apart) and a half-integer time (rows offset by 1/2), each
+// built from scratch (the KDS of §4.3 does not exist yet). Coordinates are scaled by 1/ε = 2^j.
+Verdict l442(const Options& o) {
+  Verdict v;
+  const int per = 4;
+  std::vector<int> js = o.quick ? std::vector<int>{2, 6} : std::vector<int>{2, 4, 6, 8};
+  std::vector<double> at_int, at_half;
+  for (int j : js) {
+    long long E = 1LL << j;
+    for (int half : {0, 1}) {
+      std::vector<InputPoint> in;
+      for (int i = 0; i < per; ++i) {
+        in.push_back({exact::Integer(i * E + (half ? E / 2 : 0)), exact::Integer(0)});
+        in.push_back({exact::Integer(i * E), exact::Integer(1)});
+      }
+      Mesh m = construct(in);
+      double st = double(m.size() - m.n()) / m.n();
+      (half ? at_half : at_int).push_back(st);
+      v.figure(std::string("ε=2^-") + std::to_string(j) + (half ? " half-integer" : " integer") + " Steiner/n", fmt(st));
+    }
+  }
+  bool grows = true;
+  for (std::size_t i = 1; i < at_int.size(); ++i) grows = grows && at_int[i] > at_int[i - 1] + 1;
+  double hmin = *std::min_element(at_half.begin(), at_half.end()), hmax = *std::max_element(at_half.begin(), at_half.end());
+  double slope = (at_int.back() - at_int.front()) / (js.back() - js.front());
+  v.figure("integer-time Steiner/n per unit of log2(1/ε) (L4.4.2: Ω(log Δ))", fmt(slope));
+  v.figure("half-integer Steiner/n max/min (L4.4.3: O(1))", fmt(hmax / hmin));
+  v.figure("changes per unit time ≥ 2(|M_int| − |M_half|), ÷ (n log2(1/ε)) at the smallest ε (L4.4.4)",
+           fmt(2 * (at_int.back() - at_half.back()) / js.back()));
+  v.pass = grows && hmax / hmin < 1.15;
+  v.summary = "Fig. 4.6 snapshots (n = 8, ε = 2^-j), from scratch: Steiner/n grows with log(1/ε) at integer times and stays "
+              "flat at half-integer times (L4.4.2, L4.4.3; L4.4.4's lower bound per unit time follows)";
+  return v;
+}
+
 }  // namespace
 
 std::vector<Check> kmesh_checks() {
   return {{"T4.2.12", "Ch.4 construction: quality mesh in O(n log Δ) operations", t4212},
-          {"L4.2.11", "Ch.4: O(n) ℓ-centers per rank", l4211}};
+          {"L4.2.11", "Ch.4: O(n) ℓ-centers per rank", l4211},
+          {"L4.4.2", "Ch.4 Fig. 4.6: Ω(n log Δ) Steiner vertices at integer times, O(n) at half-integers", l442}};
 }
 
 }  // namespace kmr::audit
