@@ -24,6 +24,7 @@ namespace kmr::kmesh {
 
 struct InputPoint {
   exact::Integer x, y;
+  exact::Integer vx{0}, vy{0};  // velocity (the trajectory is (x + vx·t, y + vy·t)); ignored by construct()
   friend bool operator==(const InputPoint& a, const InputPoint& b) { return a.x == b.x && a.y == b.y; }
   friend bool operator<(const InputPoint& a, const InputPoint& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
 };

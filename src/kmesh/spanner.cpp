@@ -207,4 +207,9 @@ void Spanner::promote(int x, const std::vector<int>& nbrs, int parent, int proxy
   add_kid(parent >= 0 ? parent : proxy, l, x);
 }
 
+void Spanner::move_to(const std::vector<Point2>& positions) {
+  KMR_CHECK(positions.size() == nodes_.size(), "move_to: wrong number of positions");
+  for (std::size_t i = 0; i < nodes_.size(); ++i) nodes_[i].p = positions[i], nodes_[i].e = enclose(positions[i]);
+}
+
 }  // namespace kmr::kmesh

@@ -79,6 +79,8 @@ class Spanner {
   // Promote a pending vertex x from rank top(x) to top(x)+1 with the given neighbours there; it
   // becomes pending at the new rank with `proxy`, or gets `parent` if ≥ 0.
   void promote(int x, const std::vector<int>& nbrs, int parent, int proxy, int old_proxy);
+  // Replace every position (a kinetic snapshot; the pointers are kept as they are).
+  void move_to(const std::vector<Point2>& positions);
 
  private:
   struct Node {
