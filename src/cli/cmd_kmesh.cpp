@@ -2,7 +2,8 @@
 // the deformable spanner, then the Delaunay triangulation of the output; --check runs the library's
 // brute-force lemma checks (L4.2.4, L4.2.5, L4.2.6, L4.2.9, L4.2.10, Delaunay, 9/2-well-spacedness).
 // Only the static construction at T = 0 is implemented: the kinetic/dynamic part of the issue
-// (--until T > 0, --updates) is refused with a message saying so (spec/kmesh.md).
+// (--until T > 0, --updates) is refused with a message saying so (spec/kmesh.md). The §4.3
+// certificates of the mesh are built as polynomials of time and their first failure is reported.
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -14,6 +15,7 @@
 #include "cli/commands.hpp"
 #include "exact/error.hpp"
 #include "exact/integer.hpp"
+#include "kmesh/certificates.hpp"
 #include "kmesh/construction.hpp"
 #include "kmesh/invariants.hpp"
 
@@ -83,13 +85,14 @@ int kmesh_command(const Argv& argv) {
                  "                and 9/2-well-spacedness; exit status 1 on a violation\n"
                  "  --stats F     per-rank counts, operation counts and measured constants as JSON\n"
                  "stdout: JSON {\"time\", \"vertices\": [[x, y, kind]...] (kind 1 = Steiner), \"triangles\" (ccw),\n"
-                 "\"events\", \"batches\", \"certificates\" (null: no KDS is maintained yet)}.\n"
+                 "\"events\", \"batches\" (0: no kinetic simulation yet), \"certificates\" (the number of §4.3\n"
+                 "certificates of this mesh), \"first_failure\" (the first lattice interval, within 2^20, where one of\n"
+                 "them fails, i.e. how long the T = 0 mesh stays valid; null if none)}.\n"
                  "Bad input: a message naming the file and line, exit status 2.\n";
     return 0;
   }
   if (args.positional().size() != 1) throw InputError("kmr kmesh needs exactly one input FILE (see --help)");
   long long bits = args.integer("lattice-bits", 10, 0, 62);
-  (void)bits;
   if (auto t = args.value("until")) {
     exact::Integer T;
     try {
@@ -114,7 +117,7 @@ int kmesh_command(const Argv& argv) {
                        " (identical trajectories or a collision; the spread would be infinite)");
   }
   std::vector<InputPoint> in;
-  for (auto& p : traj) in.push_back({p.x, p.y});
+  for (auto& p : traj) in.push_back({p.x, p.y, p.vx, p.vy});
   auto t0 = std::chrono::steady_clock::now();
   Mesh m = construct(in);
   double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -131,7 +134,17 @@ int kmesh_command(const Argv& argv) {
     auto& t = m.triangles[i];
     out << (i ? ", " : "") << "[" << t[0] << ", " << t[1] << ", " << t[2] << "]";
   }
-  out << "], \"events\": 0, \"batches\": 0, \"certificates\": null}\n";
+  // The certificates of §4.3 that certify this mesh, and the first lattice interval (within 2^20
+  // time units) in which one of them fails: the mesh at T = 0 is valid until then.
+  auto certs = certificates(m);
+  auto fail = first_failure(certs, static_cast<int>(bits), Dyadic(1 << 20));
+  out << "], \"events\": 0, \"batches\": 0, \"certificates\": " << certs.size() << ", \"first_failure\": ";
+  if (fail)
+    out << "{\"interval\": " << fail->first.str() << ", \"time\": " << num(Dyadic(fail->first, -bits).to_double())
+        << ", \"kind\": \"" << kind_name(certs[fail->second].kind) << "\"}";
+  else
+    out << "null";
+  out << "}\n";
 
   int status = 0;
   std::vector<CheckResult> checks;
@@ -165,7 +178,12 @@ int kmesh_command(const Argv& argv) {
     for (std::size_t i = 0; i < checks.size(); ++i)
       st << (i ? ", " : "") << "{\"claim\": \"" << checks[i].claim << "\", \"ok\": " << (checks[i].ok() ? "true" : "false")
          << ", \"measured\": " << num(checks[i].measured) << "}";
-    st << "], \"events\": [], \"updates\": []}\n";
+    std::map<std::string, std::size_t> per_kind;
+    for (auto& c : certs) ++per_kind[kind_name(c.kind)];
+    st << "], \"certificates\": {";
+    bool first = true;
+    for (auto& [k, c] : per_kind) st << (first ? "" : ", ") << "\"" << k << "\": " << c, first = false;
+    st << "}, \"events\": [], \"updates\": []}\n";
   }
   std::cout << out.str();
   return status;

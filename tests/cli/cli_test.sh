@@ -62,7 +62,7 @@ expect_error bench-too-big 'map at n=100000000 needs an estimated' -- bench sac 
 expect_error bench-too-big-sort 'quicksort at n=100000000 needs an estimated' -- bench sac --n 100000000 --program quicksort
 # kmesh (Ch. 4, static construction): one point is its own mesh; integers of any size.
 printf '# one point\n5 -7\n' >"$tmp/km1.txt"
-expect_out kmesh-one '{"time": 0, "vertices": [[5, -7, 0]], "triangles": [], "events": 0, "batches": 0, "certificates": null}' -- kmesh "$tmp/km1.txt"
+expect_out kmesh-one '{"time": 0, "vertices": [[5, -7, 0]], "triangles": [], "events": 0, "batches": 0, "certificates": 0, "first_failure": null}' -- kmesh "$tmp/km1.txt"
 # Two points 3 apart: 20·2^r ≥ 3 first at r = −2, so both activate at rank −2, and all 24 of their
 # (−2)-satellites (radius 1/4, 30° apart, chords 0.129 > 1/16) have empty balls B(s, 1/16): converted.
 printf '0 0\n3 0 0 0\n' >"$tmp/km2.txt"
