@@ -102,16 +102,24 @@ struct Builder {
 
 Point2 scaled(const InputPoint& p) { return {Dyadic(p.x * kScale), Dyadic(p.y * kScale)}; }
 
-Mesh construct(std::vector<InputPoint> points) {
+Point2 scaled_at(const InputPoint& p, const Dyadic& t) {
+  return {Dyadic(p.x * kScale) + Dyadic(p.vx * kScale) * t, Dyadic(p.y * kScale) + Dyadic(p.vy * kScale) * t};
+}
+
+Mesh construct(std::vector<InputPoint> points, const Dyadic& t) {
   KMR_CHECK(!points.empty(), "construct: no input point");
-  std::sort(points.begin(), points.end());
-  for (std::size_t i = 1; i < points.size(); ++i)
-    if (points[i] == points[i - 1])
-      throw InputError("duplicate input point (" + points[i].x.str() + ", " + points[i].y.str() + ")");
+  std::vector<std::pair<Point2, std::size_t>> at;
+  for (std::size_t i = 0; i < points.size(); ++i) at.push_back({scaled_at(points[i], t), i});
+  std::sort(at.begin(), at.end(), [](auto& a, auto& b) { return a.first < b.first; });
+  for (std::size_t i = 1; i < at.size(); ++i)
+    if (at[i].first == at[i - 1].first) {
+      auto& p = points[at[i].second];
+      throw InputError("two input points at the same place at time " + t.to_decimal() + " (point (" + p.x.str() +
+                       ", " + p.y.str() + ") moving (" + p.vx.str() + ", " + p.vy.str() + "))");
+    }
   Mesh m;
-  m.input = points;
   std::vector<Point2> pts;
-  for (auto& p : points) pts.push_back(scaled(p));
+  for (auto& [p, i] : at) m.input.push_back(points[i]), pts.push_back(p);
   const int n = static_cast<int>(pts.size());
   m.spanner = Spanner::build(pts, 8);
   Spanner& S = m.spanner;

@@ -65,10 +65,12 @@ struct Mesh {
   Rank lowest = 0, highest = 0;
 };
 
-// Scaled exact position of an input point (kScale·(x, y)).
+// Scaled exact position of an input point (kScale·(x, y)), and of its trajectory at time t.
 Point2 scaled(const InputPoint& p);
+Point2 scaled_at(const InputPoint& p, const Dyadic& t);
 
-// Fig. 4.2, all three stages.
-Mesh construct(std::vector<InputPoint> points);
+// Fig. 4.2, all three stages, on the positions at time t (default 0). Points are sorted by their
+// position at t; two points in the same place at t are refused (InputError naming it).
+Mesh construct(std::vector<InputPoint> points, const Dyadic& t = Dyadic(0));
 
 }  // namespace kmr::kmesh

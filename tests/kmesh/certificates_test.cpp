@@ -39,7 +39,7 @@ TEST(Certificates, L4_3_1_HoldAtZeroAndCertifyUntilTheFirstFailure) {
   RecordProperty("claim", "L4.3.1 L4.4.1");
   std::mt19937_64 rng(17);
   int checked = 0;
-  for (int trial = 0; trial < 6; ++trial) {
+  for (int trial = 0; trial < 4; ++trial) {
     std::uniform_int_distribution<int> d(-40, 40), v(-2, 2);
     std::vector<InputPoint> in;
     for (int i = 0; i < 4; ++i) in.push_back({Integer(d(rng)), Integer(d(rng)), Integer(v(rng)), Integer(v(rng))});
@@ -74,5 +74,5 @@ TEST(Certificates, L4_3_1_HoldAtZeroAndCertifyUntilTheFirstFailure) {
           ++checked;
     }
   }
-  EXPECT_GE(checked, 9);
+  EXPECT_GE(checked, 6);
 }
