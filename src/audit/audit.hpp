@@ -50,6 +50,7 @@ std::vector<Check> kinetic_checks();
 std::vector<Check> sac_checks();
 std::vector<Check> wellspaced_checks();
 std::vector<Check> hull_checks();
+std::vector<Check> kmesh_checks();
 
 // A measured figure as text with 3 significant digits (one format for every check).
 std::string fmt(double x);

@@ -14,5 +14,6 @@ int simulate_command(const Argv& args);
 int bench_command(const Argv& args);
 int wellspaced_command(const Argv& args);
 int hull_command(const Argv& args);
+int kmesh_command(const Argv& args);
 
 }  // namespace kmr::cli

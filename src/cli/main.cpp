@@ -21,6 +21,7 @@ const Command kCommands[] = {
     {"simulate", "run a kinetic simulation on the lattice (kinetic sorting)", kmr::cli::simulate_command},
     {"wellspaced", "dynamic well-spaced point sets (thesis Ch. 3): StableWS, updates, checks", kmr::cli::wellspaced_command},
     {"hull", "the static 3D convex hull of thesis Ch. 2 (exact, or --float)", kmr::cli::hull_command},
+    {"kmesh", "kinetic mesh refinement in 2D (thesis Ch. 4): the static construction of Fig. 4.2, checks", kmr::cli::kmesh_command},
     {"bench", "measure performance (bench sac: self-adjusting programs vs static twins)", kmr::cli::bench_command},
 };
 

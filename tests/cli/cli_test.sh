@@ -60,6 +60,40 @@ expect_error sort-until 'not a multiple of the lattice step' -- simulate sort "$
 # needs tens of GB; the sorts far more).
 expect_error bench-too-big 'map at n=100000000 needs an estimated' -- bench sac --n 100000000
 expect_error bench-too-big-sort 'quicksort at n=100000000 needs an estimated' -- bench sac --n 100000000 --program quicksort
+# kmesh (Ch. 4, static construction): one point is its own mesh; integers of any size.
+printf '# one point\n5 -7\n' >"$tmp/km1.txt"
+expect_out kmesh-one '{"time": 0, "vertices": [[5, -7, 0]], "triangles": [], "events": 0, "batches": 0, "certificates": 0, "first_failure": null}' -- kmesh "$tmp/km1.txt"
+# Two points 3 apart: 20·2^r ≥ 3 first at r = −2, so both activate at rank −2, and all 24 of their
+# (−2)-satellites (radius 1/4, 30° apart, chords 0.129 > 1/16) have empty balls B(s, 1/16): converted.
+printf '0 0\n3 0 0 0\n' >"$tmp/km2.txt"
+"$kmr" kmesh "$tmp/km2.txt" --check --stats "$tmp/km2.json" >"$tmp/km2.out" 2>"$tmp/err"
+if [ $? -eq 0 ] && grep -qF '{"rank": -2, "active": 2, "considered": 24, "converted": 24' "$tmp/km2.json"; then passed=$((passed+1)); else
+  failed=$((failed+1)); echo "FAIL kmesh-two-check"; cat "$tmp/err"; fi
+printf '0 0\n1 2 3\n' >"$tmp/km3.txt"
+expect_error kmesh-arity 'km3.txt:2: expected' -- kmesh "$tmp/km3.txt"
+printf '0 0\n1 2.5\n' >"$tmp/km4.txt"
+expect_error kmesh-not-integer "km4.txt:2: '2.5' is not a decimal integer" -- kmesh "$tmp/km4.txt"
+printf '0 0 1 0\n4 4\n0 0 0 1\n' >"$tmp/km5.txt"
+expect_error kmesh-collision 'km5.txt:3 and /' -- kmesh "$tmp/km5.txt"
+# Motion: (0,0) at rest and (3,0) moving by (1,0); --until 1/4 on the lattice 2^-2 is one interval.
+printf '0 0\n3 0 1 0\n' >"$tmp/km6.txt"
+"$kmr" kmesh "$tmp/km6.txt" --until 0.25 --lattice-bits 2 --check >"$tmp/km6.out" 2>"$tmp/err"
+if [ $? -eq 0 ] && grep -qF '"time": 0.25,' "$tmp/km6.out"; then passed=$((passed+1)); else
+  failed=$((failed+1)); echo "FAIL kmesh-until"; cat "$tmp/err"; fi
+printf '0 + 9 9 0 0\n0.25 - 9 9 0 0\n' >"$tmp/km6u.txt"
+"$kmr" kmesh "$tmp/km6.txt" --until 0.25 --lattice-bits 2 --updates "$tmp/km6u.txt" --check --stats "$tmp/km6.json" >/dev/null 2>"$tmp/err"
+if [ $? -eq 0 ] && grep -qF '"what": "insert"' "$tmp/km6.json" && grep -qF '"what": "delete"' "$tmp/km6.json"; then passed=$((passed+1)); else
+  failed=$((failed+1)); echo "FAIL kmesh-updates"; cat "$tmp/err"; fi
+# (0,0) moving (1,1) meets (4,4) at t = 4: refused when T ≥ 4, accepted before.
+printf '0 0 1 1\n4 4\n' >"$tmp/km7.txt"
+expect_error kmesh-collision-later 'collide at time 4' -- kmesh "$tmp/km7.txt" --until 5
+expect_error kmesh-until-off-lattice 'not a multiple of the lattice step' -- kmesh "$tmp/km6.txt" --until 0.125 --lattice-bits 2
+printf '0 - 1 1 0 0\n' >"$tmp/km8.txt"
+expect_error kmesh-delete-absent 'km8.txt:1: deletes a trajectory that is not present' -- kmesh "$tmp/km6.txt" --updates "$tmp/km8.txt"
+printf '0 + 1 1\n' >"$tmp/km9.txt"
+expect_error kmesh-update-arity "km9.txt:1: expected 'T + x y vx vy'" -- kmesh "$tmp/km6.txt" --updates "$tmp/km9.txt"
+printf '# nothing\n' >"$tmp/km0.txt"
+expect_error kmesh-empty 'no input point' -- kmesh "$tmp/km0.txt"
 expect_error unknown-command "unknown command 'frob'" -- frob
 
 # kmr hull (thesis §2.2). A tetrahedron: outward normals −z, −y, −x, (1,1,1), counter-clockwise from outside.

@@ -1,0 +1,282 @@
+// kmr kmesh: the Chapter 4 mesh (Fig. 4.2) of a point file: satellites converted rank by rank over
+// the deformable spanner, then the Delaunay triangulation of the output; --check runs the library's
+// brute-force lemma checks (L4.2.4, L4.2.5, L4.2.6, L4.2.9, L4.2.10, Delaunay, 9/2-well-spacedness).
+// Motion and updates run on kmesh/rebuild_simulation.hpp: the §4.3 certificates are advanced on the
+// lattice and every batch of failures (and every update) is repaired by a from-scratch rebuild; the
+// change-propagation update of Fig. 4.5 is not implemented (spec/kmesh.md).
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "cli/args.hpp"
+#include "cli/commands.hpp"
+#include "exact/error.hpp"
+#include "exact/integer.hpp"
+#include "kmesh/certificates.hpp"
+#include "kmesh/construction.hpp"
+#include "kmesh/invariants.hpp"
+#include "kmesh/rebuild_simulation.hpp"
+
+namespace kmr::cli {
+namespace {
+
+using namespace kmr::kmesh;
+
+struct Trajectory {
+  exact::Integer x, y, vx, vy;
+  std::size_t line;
+};
+
+std::vector<Trajectory> read_points(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError("cannot read file '" + path + "'");
+  std::vector<Trajectory> out;
+  std::string line;
+  std::size_t n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    auto h = line.find('#');
+    if (h != std::string::npos) line.resize(h);
+    std::istringstream ss(line);
+    std::vector<std::string> t;
+    std::string w;
+    while (ss >> w) t.push_back(w);
+    if (t.empty()) continue;
+    std::string where = path + ":" + std::to_string(n);
+    if (t.size() != 2 && t.size() != 4)
+      throw InputError(where + ": expected 'x y' or 'x y vx vy', got " + std::to_string(t.size()) + " values");
+    auto num = [&](const std::string& s) {
+      try {
+        return exact::parse_integer(s);
+      } catch (const InputError&) {
+        throw InputError(where + ": '" + s + "' is not a decimal integer");
+      }
+    };
+    Trajectory p{num(t[0]), num(t[1]), t.size() == 4 ? num(t[2]) : exact::Integer(0),
+                 t.size() == 4 ? num(t[3]) : exact::Integer(0), n};
+    out.push_back(p);
+  }
+  if (out.empty()) throw InputError(path + ": no input point");
+  return out;
+}
+
+std::string num(double x) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+
+}  // namespace
+
+int kmesh_command(const Argv& argv) {
+  Args args(argv, {"until", "lattice-bits", "updates", "stats"}, {"check"});
+  if (args.help()) {
+    std::cout << "usage: kmr kmesh FILE [--until T] [--lattice-bits B] [--updates FILE] [--check] [--stats FILE]\n"
+                 "The Chapter 4 mesh of the points in FILE: satellites (24 rays, orbits 2^l) converted rank by rank\n"
+                 "over a deformable spanner (Fig. 4.2), and the Delaunay triangulation of the output.\n"
+                 "  FILE          one point per line, 'x y vx vy' or 'x y' (decimal integers of any size): the\n"
+                 "                trajectory (x + vx t, y + vy t); '#' starts a comment\n"
+                 "  --until T     the time of the output (a multiple of 2^-B; default 0, the static construction)\n"
+                 "  --lattice-bits B  the time lattice 2^-B (default 10)\n"
+                 "  --updates F   dynamic updates 'T + x y vx vy' (insert) / 'T - x y vx vy' (delete) at lattice time T\n"
+                 "  (motion and updates: the certificates of §4.3 are simulated on the lattice; each batch of failures\n"
+                 "   and each update is repaired by rebuilding the mesh from scratch, not by the update of Fig. 4.5)\n"
+                 "  --check       after the construction, every batch and every update: brute-force checks of L4.2.4,\n"
+                 "                L4.2.5, L4.2.6, L4.2.9, L4.2.10, the spanner, Delaunay and 9/2-well-spacedness; exit 1 on a violation\n"
+                 "  --stats F     per-rank counts, operation counts and measured constants as JSON\n"
+                 "stdout: JSON {\"time\", \"vertices\": [[x, y, kind]...] (kind 1 = Steiner), \"triangles\" (ccw),\n"
+                 "\"events\", \"batches\" (certificate failures and their lattice intervals up to T), \"certificates\" (of §4.3\n"
+                 "certificates of this mesh), \"first_failure\" (the first lattice interval, within 2^20, where one of\n"
+                 "them fails after T; null if none)}. Bad input also: identical trajectories, two points colliding before T.\n"
+                 "Bad input: a message naming the file and line, exit status 2.\n";
+    return 0;
+  }
+  if (args.positional().size() != 1) throw InputError("kmr kmesh needs exactly one input FILE (see --help)");
+  long long bits = args.integer("lattice-bits", 10, 0, 62);
+  auto lattice_time = [&](const std::string& text, const std::string& where) {
+    Dyadic t;
+    try {
+      t = Dyadic::parse(text);
+    } catch (const InputError&) {
+      throw InputError(where + ": '" + text + "' is not a dyadic decimal time");
+    }
+    if (t.sign() < 0) throw InputError(where + ": time " + text + " is negative");
+    if (!t.shifted(bits).is_integer())
+      throw InputError(where + ": time " + text + " is not a multiple of the lattice step 2^-" + std::to_string(bits));
+    return t;
+  };
+  Dyadic until = args.value("until") ? lattice_time(*args.value("until"), "--until") : Dyadic(0);
+  const std::string& path = args.positional()[0];
+  auto traj = read_points(path);
+  struct Update {
+    Dyadic t;
+    bool insert;
+    InputPoint p;
+    std::string where;
+  };
+  std::vector<Update> updates;
+  if (auto uf = args.value("updates")) {
+    std::ifstream in(*uf);
+    if (!in) throw InputError("cannot read file '" + *uf + "'");
+    std::string line;
+    std::size_t n = 0;
+    while (std::getline(in, line)) {
+      ++n;
+      auto h = line.find('#');
+      if (h != std::string::npos) line.resize(h);
+      std::istringstream ss(line);
+      std::vector<std::string> t;
+      std::string w;
+      while (ss >> w) t.push_back(w);
+      if (t.empty()) continue;
+      std::string where = *uf + ":" + std::to_string(n);
+      if (t.size() != 6 || (t[1] != "+" && t[1] != "-"))
+        throw InputError(where + ": expected 'T + x y vx vy' or 'T - x y vx vy'");
+      auto num = [&](const std::string& x) {
+        try {
+          return exact::parse_integer(x);
+        } catch (const InputError&) {
+          throw InputError(where + ": '" + x + "' is not a decimal integer");
+        }
+      };
+      updates.push_back({lattice_time(t[0], where), t[1] == "+", {num(t[2]), num(t[3]), num(t[4]), num(t[5])}, where});
+    }
+    std::stable_sort(updates.begin(), updates.end(), [](auto& a, auto& b) { return a.t < b.t; });
+    for (auto& u : updates)
+      if (u.t > until) throw InputError(u.where + ": update at time " + u.t.to_decimal() + " is after --until " + until.to_decimal());
+  }
+  // Validate everything before running: membership of every update, and no two trajectories in the
+  // same place at a common time in [0, T] (the spread would be infinite).
+  struct Life {
+    InputPoint p;
+    Dyadic from, to;
+    std::string where;
+  };
+  std::vector<Life> lives;
+  std::vector<std::size_t> present;
+  for (auto& p : traj) {
+    present.push_back(lives.size());
+    lives.push_back({{p.x, p.y, p.vx, p.vy}, Dyadic(0), until, path + ":" + std::to_string(p.line)});
+  }
+  auto same = [](const InputPoint& a, const InputPoint& b) { return a.x == b.x && a.y == b.y && a.vx == b.vx && a.vy == b.vy; };
+  for (auto& u : updates) {
+    auto it = std::find_if(present.begin(), present.end(), [&](std::size_t i) { return same(lives[i].p, u.p); });
+    if (u.insert) {
+      if (it != present.end()) throw InputError(u.where + ": inserts a trajectory that is already present");
+      present.push_back(lives.size());
+      lives.push_back({u.p, u.t, until, u.where});
+    } else {
+      if (it == present.end()) throw InputError(u.where + ": deletes a trajectory that is not present");
+      if (present.size() == 1) throw InputError(u.where + ": deletes the last trajectory");
+      lives[*it].to = u.t;
+      present.erase(it);
+    }
+  }
+  for (std::size_t i = 0; i < lives.size(); ++i)
+    for (std::size_t j = i + 1; j < lives.size(); ++j) {
+      Dyadic from = std::max(lives[i].from, lives[j].from), to = std::min(lives[i].to, lives[j].to);
+      if (from > to) continue;
+      if (same(lives[i].p, lives[j].p))
+        throw InputError(lives[j].where + " and " + lives[i].where + ": identical trajectories");
+      if (auto c = first_collision({lives[i].p, lives[j].p}, from, to))
+        throw InputError(lives[j].where + " and " + lives[i].where + ": the two points collide at time " +
+                         std::get<0>(*c).to_decimal() + " (the spread would be infinite)");
+    }
+
+  std::vector<InputPoint> in;
+  for (auto& p : traj) in.push_back({p.x, p.y, p.vx, p.vy});
+  auto t0 = std::chrono::steady_clock::now();
+  RebuildSimulation sim(in, static_cast<int>(bits));
+  int status = 0;
+  std::vector<CheckResult> checks;
+  auto check_now = [&](const std::string& when) {
+    if (!args.has("check")) return;
+    checks = check_all(sim.snapshot());
+    for (auto& c : checks)
+      for (auto& v : c.violations) {
+        std::cerr << "kmr kmesh --check (" << when << "): " << c.claim << ": " << v << "\n";
+        status = 1;
+      }
+  };
+  check_now("construction");
+  auto after = [&](const Batch& b) { check_now("batch at time " + b.time.to_decimal()); };
+  for (auto& u : updates) {
+    sim.run_until(u.t, after);
+    if (u.insert) sim.insert(u.p);
+    else sim.erase(u.p);
+    check_now(std::string(u.insert ? "insert" : "delete") + " at time " + u.t.to_decimal());
+  }
+  sim.run_until(until, after);
+  Mesh m = sim.mesh_now();
+  double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  std::ostringstream out;
+  out << "{\"time\": " << until.to_decimal() << ", \"vertices\": [";
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const Point2& p = m.spanner.position(static_cast<int>(i));
+    out << (i ? ", " : "") << "[" << num(p[0].to_double() / double(kScale)) << ", "
+        << num(p[1].to_double() / double(kScale)) << ", " << (m.info[i].steiner ? 1 : 0) << "]";
+  }
+  out << "], \"triangles\": [";
+  for (std::size_t i = 0; i < m.triangles.size(); ++i) {
+    auto& t = m.triangles[i];
+    out << (i ? ", " : "") << "[" << t[0] << ", " << t[1] << ", " << t[2] << "]";
+  }
+  // The certificates of §4.3 that certify this mesh, and the first lattice interval (within 2^20
+  // time units) in which one of them fails: the mesh at T = 0 is valid until then.
+  auto certs = certificates(m);
+  auto fail = first_failure(certs, static_cast<int>(bits), Dyadic(1 << 20));
+  std::size_t event_batches = 0;
+  for (auto& b : sim.batches()) event_batches += b.what == "events";
+  out << "], \"events\": " << sim.events() << ", \"batches\": " << event_batches << ", \"certificates\": " << certs.size()
+      << ", \"first_failure\": ";
+  if (fail)
+    out << "{\"interval\": " << fail->first.str() << ", \"time\": " << num((until + Dyadic(fail->first, -bits)).to_double())
+        << ", \"kind\": \"" << kind_name(certs[fail->second].kind) << "\"}";
+  else
+    out << "null";
+  out << "}\n";
+
+  if (auto sf = args.value("stats")) {
+    std::ofstream st(*sf);
+    if (!st) throw InputError("cannot write --stats file '" + *sf + "'");
+    std::size_t steiner = m.size() - m.n();
+    st << "{\"n\": " << m.n() << ", \"vertices\": " << m.size() << ", \"steiner\": " << steiner
+       << ", \"triangles\": " << m.triangles.size() << ", \"lowest_rank\": " << m.lowest
+       << ", \"highest_rank\": " << m.highest << ", \"ops\": {\"spanner\": " << m.ops_spanner
+       << ", \"convert\": " << m.ops_convert << ", \"delaunay\": " << m.ops_delaunay << "}, \"seconds\": " << num(secs)
+       << ", \"ranks\": [";
+    for (std::size_t i = 0; i < m.ranks.size(); ++i) {
+      auto& r = m.ranks[i];
+      std::size_t centers = 0;
+      for (std::size_t v = 0; v < m.size(); ++v)
+        if (m.spanner.top(static_cast<int>(v)) >= r.rank && m.spanner.min_rank(static_cast<int>(v)) <= r.rank) ++centers;
+      st << (i ? ", " : "") << "{\"rank\": " << r.rank << ", \"active\": " << r.active << ", \"considered\": "
+         << r.considered << ", \"converted\": " << r.converted << ", \"promoted\": " << r.promoted
+         << ", \"centers\": " << centers << "}";
+    }
+    st << "], \"checks\": [";
+    for (std::size_t i = 0; i < checks.size(); ++i)
+      st << (i ? ", " : "") << "{\"claim\": \"" << checks[i].claim << "\", \"ok\": " << (checks[i].ok() ? "true" : "false")
+         << ", \"measured\": " << num(checks[i].measured) << "}";
+    std::map<std::string, std::size_t> per_kind;
+    for (auto& c : certs) ++per_kind[kind_name(c.kind)];
+    st << "], \"certificates\": {";
+    bool first = true;
+    for (auto& [k, c] : per_kind) st << (first ? "" : ", ") << "\"" << k << "\": " << c, first = false;
+    st << "}, \"batches\": [";
+    for (std::size_t i = 0; i < sim.batches().size(); ++i) {
+      auto& b = sim.batches()[i];
+      st << (i ? ", " : "") << "{\"time\": " << b.time.to_decimal() << ", \"what\": \"" << b.what << "\", \"events\": " << b.events
+         << ", \"vertices\": " << b.vertices << ", \"steiner_before\": " << b.steiner_before << ", \"steiner_kept\": " << b.steiner_kept << "}";
+    }
+    st << "]}\n";
+  }
+  std::cout << out.str();
+  return status;
+}
+
+}  // namespace kmr::cli

@@ -1,0 +1,187 @@
+#include "kmesh/certificates.hpp"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "exact/error.hpp"
+#include "geometry/predicates.hpp"
+#include "poly/sturm.hpp"
+
+namespace kmr::kmesh {
+namespace {
+
+// Polynomials of time with dyadic coefficients (positions of moving dyadic points), only for
+// building certificate polynomials with the geometry templates; converted to integer polynomials
+// by a positive power-of-two factor, which keeps every sign.
+struct DPoly {
+  std::vector<Dyadic> c;
+  DPoly() = default;
+  DPoly(Dyadic a) : c{std::move(a)} {}  // NOLINT
+  DPoly(Dyadic a, Dyadic b) : c{std::move(a), std::move(b)} {}
+  friend DPoly operator+(const DPoly& x, const DPoly& y) {
+    DPoly r;
+    r.c.resize(std::max(x.c.size(), y.c.size()), Dyadic(0));
+    for (std::size_t i = 0; i < x.c.size(); ++i) r.c[i] += x.c[i];
+    for (std::size_t i = 0; i < y.c.size(); ++i) r.c[i] += y.c[i];
+    return r;
+  }
+  DPoly operator-() const {
+    DPoly r = *this;
+    for (auto& v : r.c) v = -v;
+    return r;
+  }
+  friend DPoly operator-(const DPoly& x, const DPoly& y) { return x + (-y); }
+  friend DPoly operator*(const DPoly& x, const DPoly& y) {
+    DPoly r;
+    if (x.c.empty() || y.c.empty()) return r;
+    r.c.assign(x.c.size() + y.c.size() - 1, Dyadic(0));
+    for (std::size_t i = 0; i < x.c.size(); ++i)
+      for (std::size_t j = 0; j < y.c.size(); ++j) r.c[i + j] += x.c[i] * y.c[j];
+    return r;
+  }
+};
+
+poly::Polynomial to_poly(const DPoly& p) {
+  std::int64_t e = 0;
+  for (auto& v : p.c)
+    if (!v.is_zero()) e = std::min(e, v.exponent());
+  std::vector<exact::Integer> out;
+  for (auto& v : p.c) {
+    Dyadic w = v.shifted(-e);
+    KMR_CHECK(w.is_integer(), "certificate: scaling to integers failed");
+    out.push_back(w.is_zero() ? exact::Integer(0) : exact::Integer(w.mantissa() << static_cast<unsigned>(w.exponent())));
+  }
+  return poly::Polynomial(out);
+}
+
+using MPoint = geometry::Point<2, DPoly>;
+
+}  // namespace
+
+const char* kind_name(Certificate::Kind k) {
+  static const char* n[] = {"parent-child", "separation", "edge", "potential-neighbour", "ball-not-empty", "ball-empty", "delaunay"};
+  return n[k];
+}
+
+std::vector<std::array<exact::Integer, 2>> vertex_velocities(const Mesh& m) {
+  std::vector<std::array<exact::Integer, 2>> v(m.size());
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const InputPoint& p = m.input[m.info[i].nucleus];
+    v[i] = {p.vx * kScale, p.vy * kScale};
+  }
+  return v;
+}
+
+std::vector<Certificate> certificates(const Mesh& m) {
+  const Spanner& S = m.spanner;
+  const int N = static_cast<int>(m.size());
+  auto vel = vertex_velocities(m);
+  std::vector<MPoint> mp(N);
+  for (int i = 0; i < N; ++i)
+    for (int k = 0; k < 2; ++k) mp[i][k] = DPoly(S.position(i)[k], Dyadic(vel[i][k]));
+  auto d2 = [&](int a, const MPoint& q) { return geometry::squared_distance<2, DPoly>(mp[a], q); };
+  std::vector<Certificate> out;
+  // value = ±(|ab|² − (k·kScale·2^l)²): below = true for "≤" certificates.
+  auto dist_cert = [&](Certificate::Kind kind, int a, const MPoint& q, int b, std::int64_t k, Rank l, bool below) {
+    DPoly v = d2(a, q) - DPoly(threshold2(k, l));
+    if (below) v = -v;
+    out.push_back({kind, a, b, l, !below, to_poly(v)});
+  };
+  for (int x = 0; x < N; ++x) {
+    if (x != S.root()) dist_cert(Certificate::ParentChild, x, mp[S.parent(x)], S.parent(x), 1, S.top(x) + 1, true);
+    for (auto& [l, list] : S.all_neighbors(x)) {
+      std::set<int> nb(list.begin(), list.end());
+      for (int y : list)
+        if (y > x) {
+          dist_cert(Certificate::Separation, x, mp[y], y, 1, l, false);
+          dist_cert(Certificate::Edge, x, mp[y], y, kC, l, true);
+        }
+      // Potential neighbours: cousins (children of the (l+1)-neighbours of x's rank-(l+1) representative).
+      if (l >= S.top_rank()) continue;
+      int r = S.rep(x, l + 1);
+      std::vector<int> fam = S.neighbors(r, l + 1);
+      fam.push_back(r);
+      std::set<int> cousins;
+      for (int z : fam) {
+        cousins.insert(z);
+        for (int y : S.kids(z, l)) cousins.insert(y);
+      }
+      for (int y : cousins)
+        if (y > x && !nb.count(y) && S.top(y) >= l) dist_cert(Certificate::Potential, x, mp[y], y, kC, l, false);
+    }
+  }
+  // Conversion decisions (§4.3).
+  for (auto& c : m.considered) {
+    MPoint s;
+    const Point2 off = satellite_offset(c.ray, c.rank);
+    for (int k = 0; k < 2; ++k) s[k] = mp[c.nucleus][k] + DPoly(off[k]);
+    Point2 s0 = satellite_position(S.position(c.nucleus), c.ray, c.rank);
+    if (!c.converted) {
+      int w = -1;  // the nearest earlier vertex in the ball, found by brute force
+      for (int x = 0; x < c.existing; ++x)
+        if (within(s0, S.position(x), 1, c.rank - 2) &&
+            (w < 0 || geometry::compare_squared_distance<2, Dyadic>(s0, S.position(x), S.position(w)) < 0))
+          w = x;
+      KMR_CHECK(w >= 0, "certificates: a satellite not converted has no vertex in its ball");
+      DPoly v = DPoly(threshold2(1, c.rank - 2)) - geometry::squared_distance<2, DPoly>(s, mp[w]);
+      out.push_back({Certificate::BallNotEmpty, c.nucleus, w, c.rank, false, to_poly(v)});
+    } else {
+      std::set<int> seen;
+      for (Rank l = c.rank - 6; l <= c.rank - 1; ++l)
+        for (int v : S.neighbors(c.vertex, l))
+          if (v < c.vertex && seen.insert(v).second) {
+            DPoly val = geometry::squared_distance<2, DPoly>(s, mp[v]) - DPoly(threshold2(1, c.rank - 2));
+            out.push_back({Certificate::BallEmpty, c.vertex, v, c.rank, true, to_poly(val)});
+          }
+    }
+  }
+  // Delaunay: every triangle stays counter-clockwise, and every interior edge locally Delaunay.
+  for (auto& t : m.triangles)
+    out.push_back({Certificate::Delaunay, t[0], t[1], 0, true,
+                   to_poly(geometry::orientation_value<DPoly>(mp[t[0]], mp[t[1]], mp[t[2]]))});
+  std::map<std::pair<int, int>, int> apex;
+  for (auto& t : m.triangles)
+    for (int i = 0; i < 3; ++i) apex[{t[i], t[(i + 1) % 3]}] = t[(i + 2) % 3];
+  for (auto& [e, c] : apex) {
+    if (e.first > e.second) continue;
+    auto it = apex.find({e.second, e.first});
+    if (it == apex.end()) continue;
+    int d = it->second;
+    DPoly v = -geometry::side_of_oriented_circle_value<DPoly>(mp[e.first], mp[e.second], mp[c], mp[d]);
+    out.push_back({Certificate::Delaunay, e.first, e.second, 0, true, to_poly(v)});
+  }
+  return out;
+}
+
+bool holds_at(const Certificate& c, const Dyadic& t) {
+  if (c.value.is_zero()) return c.kind == Certificate::Delaunay || !c.strict;
+  int s = c.value.sign_at(t);
+  if (s == 0 && c.kind == Certificate::Delaunay) return true;  // cocircular now: the perturbation decides
+  return c.strict ? s > 0 : s >= 0;
+}
+
+std::optional<std::pair<exact::Integer, std::size_t>> first_failure(const std::vector<Certificate>& certs, int bits,
+                                                                    const Dyadic& horizon) {
+  std::optional<std::pair<exact::Integer, std::size_t>> best;
+  for (std::size_t i = 0; i < certs.size(); ++i) {
+    if (certs[i].value.degree() <= 0) continue;
+    poly::LatticeRootSolver solver(certs[i].value, bits);
+    Dyadic h = best ? Dyadic(best->first, -bits) : horizon;
+    auto k = solver.next_failure_after(Dyadic(0), h);
+    if (k && (!best || *k < best->first)) best = {{*k, i}};
+  }
+  return best;
+}
+
+Mesh moved_to(const Mesh& m, const Dyadic& t) {
+  Mesh r = m;
+  auto vel = vertex_velocities(m);
+  std::vector<Point2> p(m.size());
+  for (std::size_t i = 0; i < m.size(); ++i)
+    for (int k = 0; k < 2; ++k) p[i][k] = m.spanner.position(static_cast<int>(i))[k] + Dyadic(vel[i][k]) * t;
+  r.spanner.move_to(p);
+  return r;
+}
+
+}  // namespace kmr::kmesh

@@ -1,0 +1,57 @@
+#pragma once
+// The certificates of §4.1.2 and §4.3 for a constructed mesh of moving points, as certificate
+// polynomials of time (the first step of the KDS; the update of Fig. 4.5 is not implemented).
+// Every vertex moves like its nucleus: position(t) = position(0) + kScale·(vx, vy)·t.
+// Kinds and the inequality each certifies (value(t) ≥ 0, or > 0 when `strict`):
+//  * ParentChild   |x parent|² ≤ (2^(top+1))²            (§4.1.2)
+//  * Separation    |x y|² > (2^ℓ)² for ℓ-neighbours        (§4.1.2)
+//  * Edge          |x y|² ≤ (c·2^ℓ)² for ℓ-neighbours      (§4.1.2)
+//  * Potential     |x y|² > (c·2^ℓ)² for ℓ-centers that are cousins but not neighbours (§4.1.2)
+//  * BallNotEmpty  |s w|² ≤ (2^(ℓ−2))² for a witness w of a satellite s that was not converted (§4.3)
+//  * BallEmpty     |s v|² > (2^(ℓ−2))² for every earlier ℓ′-neighbour v, ℓ′ ∈ [ℓ−6, ℓ−1], of a
+//                  converted ℓ-satellite s (§4.3)
+//  * Delaunay      every triangle stays counter-clockwise, and the in-circle certificate of every interior edge (a, b) of the triangulation with
+//                  apexes c, d: d outside the circle (a, b, c). It stands for the thesis's halfspace
+//                  certificates of the local Voronoi cells (same events: a Voronoi neighbour change).
+//                  A polynomial ≡ 0 (four satellites of one nucleus, rigidly cocircular) is decided
+//                  by the symbolic perturbation for all times and never fails.
+// Guarantees (tests/kmesh/certificates_test.cpp): every certificate holds at t = 0 (L4.3.1 at the
+// construction time); first_failure() is the first lattice interval where one changes sign; at any
+// dyadic time before it, the mesh moved to that time still passes the brute-force spanner, ball and
+// Delaunay checks.
+#include <optional>
+#include <vector>
+
+#include "kmesh/construction.hpp"
+#include "poly/polynomial.hpp"
+
+namespace kmr::kmesh {
+
+struct Certificate {
+  enum Kind { ParentChild, Separation, Edge, Potential, BallNotEmpty, BallEmpty, Delaunay };
+  Kind kind;
+  int a, b;  // the vertices it is about (Delaunay: the edge)
+  Rank rank;
+  bool strict;
+  poly::Polynomial value;  // holds while value(t) ≥ 0 (strict: > 0)
+};
+
+const char* kind_name(Certificate::Kind k);
+
+// The velocity of every vertex of m in stored units (kScale·(vx, vy) of its nucleus).
+std::vector<std::array<exact::Integer, 2>> vertex_velocities(const Mesh& m);
+
+std::vector<Certificate> certificates(const Mesh& m);
+
+// Whether c holds at the dyadic time t (exact; an identically zero Delaunay polynomial holds).
+bool holds_at(const Certificate& c, const Dyadic& t);
+
+// The first lattice interval index k (δ = 2^−bits) with kδ ≥ 0 and kδ < horizon in which some
+// certificate changes sign, and that certificate; nullopt if none does.
+std::optional<std::pair<exact::Integer, std::size_t>> first_failure(const std::vector<Certificate>& certs, int bits,
+                                                                    const Dyadic& horizon);
+
+// The mesh with every vertex moved to time t (same combinatorics: spanner pointers, triangles).
+Mesh moved_to(const Mesh& m, const Dyadic& t);
+
+}  // namespace kmr::kmesh

@@ -1,0 +1,44 @@
+#pragma once
+// Brute-force checks of the invariants and lemmas of §4.1.2 and §4.2, written independently of the
+// searches they check (no spanner pointer is used to find a vertex; every vertex is scanned).
+// Each check returns its violations as readable strings (empty = holds) and the measured constant
+// where the claim is a bound.
+//  * spanner (S1–S4 of kmesh/spanner.hpp): separation, covering/parents, neighbours, pointers;
+//  * L4.2.4  a satellite was converted iff its closed ball B(s, 2^(ℓ−2)) held no earlier vertex;
+//  * L4.2.5  per rank, the converted satellites are a maximal independent subset of the proximity
+//            graph (satellites with empty balls at the start of the rank, edges at distance ≤ 2^(ℓ−2));
+//  * L4.2.6  no other vertex of M within 2^(ℓ−2) of a vertex of rank ℓ (activation or conversion);
+//  * L4.2.9  both ends of every Delaunay edge are spanner neighbours at a rank ℓ−6 … ℓ−3 of one end;
+//  * L4.2.10 λ_s ∈ [ℓ−6, ℓ−3] for every satellite converted at rank ℓ;
+//  * delaunay: every triangle is ccw with no vertex strictly inside its circumcircle, and the
+//    triangles form a disc whose boundary is the convex hull of M, with the hull's area;
+//  * wellspaced: |v c| ≤ 9/2·NN(v) for every circumcenter c of a triangle at v (the domain of a hull
+//    vertex is the convex hull of its Voronoi vertices and itself, spec/kmesh.md);
+//  * size conformity (L4.2.8): max lfs(v)/NN_M(v) reported (lfs = distance to the second-nearest
+//    input point), a measured constant.
+#include <string>
+#include <vector>
+
+#include "kmesh/construction.hpp"
+
+namespace kmr::kmesh {
+
+struct CheckResult {
+  std::string claim;
+  std::vector<std::string> violations;
+  double measured = 0;  // the measured constant, where the claim is a bound
+  bool ok() const { return violations.empty(); }
+};
+
+CheckResult check_spanner(const Spanner& S);
+CheckResult check_ball_empty(const Mesh& m);         // L4.2.4
+CheckResult check_independent_set(const Mesh& m);    // L4.2.5
+CheckResult check_empty_balls(const Mesh& m);        // L4.2.6
+CheckResult check_voronoi_candidates(const Mesh& m); // L4.2.9
+CheckResult check_min_ranks(const Mesh& m);          // L4.2.10
+CheckResult check_delaunay(const Mesh& m);
+CheckResult check_well_spaced(const Mesh& m);        // L4.2.3 / L4.2.7, measured max |vc|/NN(v)
+CheckResult check_size_conformity(const Mesh& m);    // L4.2.8, measured max lfs/NN
+std::vector<CheckResult> check_all(const Mesh& m);
+
+}  // namespace kmr::kmesh
