@@ -120,7 +120,8 @@ std::string Runtime::hex(std::uint64_t v) {
 void Runtime::check_readable(const ModBase* m) const {
   if (m->dead) fail("read of a discarded modifiable " + hex(m->name));
   if (m->input || m->external) return;
-  if (!m->written || !m->writer || !OrderList::before(m->writer, now_))
+  // The writer at now_ is the operation just performed (a read right after its write).
+  if (!m->written || !m->writer || (m->writer != now_ && !OrderList::before(m->writer, now_)))
     fail("read of modifiable " + hex(m->name) + " before it was written in this execution");
 }
 

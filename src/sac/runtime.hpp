@@ -506,7 +506,9 @@ class Runtime {
 
   template <class T, class... K>
   Mod<T>* alloc(const Label& label, const K&... keys) {
-    return alloc_impl<Mod<T>>(label, nullptr, keys...);
+    Mod<T>* m = alloc_impl<Mod<T>>(label, nullptr, keys...);
+    if (m->external) fail(std::string("allocation ") + label.name + ": key of a traceable reused by a plain allocation");
+    return m;
   }
   // A traceable value created by the computation (§1 item 1; a kinetic certificate): keyed like
   // alloc (the same key inside the re-executed interval returns the same traceable, with the value
@@ -854,7 +856,7 @@ class Runtime {
     for (KeyedNode* n = chain(h, anchor); n; n = n->hnext) {
       if (n->hash != h || n->tag != tag<M>() || n->kind != Kind::MemoStart) continue;
       auto* m = static_cast<M*>(n);
-      if (m->label->hash != label.hash || !(m->key == key)) continue;
+      if ((m->label != &label && std::strcmp(m->label->name, label.name) != 0) || !(m->key == key)) continue;
       if (!in_window(m) || !OrderList::before(m->end, finger_)) continue;
       if (!best || OrderList::before(m, best)) best = m;
     }
