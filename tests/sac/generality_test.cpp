@@ -488,4 +488,34 @@ TEST(SacGenerality, S1_3_ReadRightAfterItsWrite) {
   EXPECT_EQ(rt.deref(out), 11);
 }
 
+// Review (§1 items 3, 4): re-execution that drops a modifiable's only write while a read of it
+// outside the re-executed interval stays live would leave that read on a stale value (a
+// from-scratch run refuses the read as unwritten); propagate() reports it.
+TEST(SacGenerality, MisuseAWriteDroppedWhileItsReadStays) {
+  auto program = [](Runtime& rt, Mod<int>* x) {
+    return rt.run([&rt, x] {
+      auto* d = rt.alloc<int>(kBox);
+      rt.read(x, [&rt, d](int v) {
+        if (v > 0) rt.write(d, v);
+      });
+      auto* o = rt.alloc<int>(kOut);
+      rt.read(d, [&rt, o](int w) { rt.write(o, w); });
+      return o;
+    });
+  };
+  Runtime rt;
+  auto* x = rt.input<int>(kIn, 1, 1);
+  Mod<int>* o = program(rt, x);
+  EXPECT_EQ(rt.deref(o), 1);
+  rt.change(x, 2);
+  rt.propagate();
+  EXPECT_EQ(rt.deref(o), 2);
+  rt.change(x, 0);
+  std::string e = error_of([&] { rt.propagate(); });
+  EXPECT_NE(e.find("lost its write"), std::string::npos) << e;
+  Runtime scratch;
+  std::string f = error_of([&] { program(scratch, scratch.input<int>(kIn, 1, 0)); });
+  EXPECT_NE(f.find("before it was written"), std::string::npos) << f;
+}
+
 }  // namespace
