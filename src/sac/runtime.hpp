@@ -878,6 +878,7 @@ class Runtime {
   std::uint32_t fresh_ordinal_ = 0;  // fresh allocations so far in that scope
   std::uint64_t stale_writes_ = 0;   // live writes superseded by an earlier write
   HookId hook_serial_ = 0;
+  std::vector<ModBase*> unwritten_;   // modifiables whose writer was discarded in this propagation
   std::vector<ReadNode*> heap_;
   std::vector<KeyedNode*> buckets_;
   std::size_t indexed_ = 0;
