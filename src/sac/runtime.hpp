@@ -38,6 +38,7 @@
 //    propagate().
 //  * Misuse throws kmr::ContractError with a message naming it: reading an unwritten modifiable,
 //    writing a modifiable twice in one execution, an allocation key used twice in one execution,
+//    a modifiable still read after re-execution removed its only write,
 //    writing an input inside a run, trace operations outside a run or inside an undo hook,
 //    propagate/change/release during a run, releasing an input that still has readers. (A write that
 //    would affect an earlier read is also refused; with write-once modifiables it is a defensive
