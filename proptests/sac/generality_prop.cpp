@@ -240,6 +240,8 @@ void check(Prog p, std::size_t max_n, int min_commands) {
   RC_CLASSIFY(st.writes_moved_earlier > 0, "a write moved earlier");
   RC_CLASSIFY(st.memo_hits > 0, "memo reused");
   RC_CLASSIFY(st.fresh_allocs > 0, "fresh allocations");
+  RC_CLASSIFY(st.allocs_reused > 0, "allocation reused");
+  RC_CLASSIFY(st.hooks_run > 0, "undo hooks run");
 }
 
 // Runs a property with at most `cases` successful cases (the suite-wide RC_PARAMS seed still

@@ -120,7 +120,8 @@ std::string Runtime::hex(std::uint64_t v) {
 void Runtime::check_readable(const ModBase* m) const {
   if (m->dead) fail("read of a discarded modifiable " + hex(m->name));
   if (m->input || m->external) return;
-  if (!m->written || !m->writer || !OrderList::before(m->writer, now_))
+  // The writer at now_ is the operation just performed (a read right after its write).
+  if (!m->written || !m->writer || (m->writer != now_ && !OrderList::before(m->writer, now_)))
     fail("read of modifiable " + hex(m->name) + " before it was written in this execution");
 }
 
@@ -276,6 +277,7 @@ void Runtime::propagate_until(const Stamp* end) {
 
 void Runtime::propagate() {
   outside("propagate");
+  unwritten_.clear();
   {
     Scope s(*this, om_.base(), nullptr);
     propagate_until(nullptr);
@@ -283,6 +285,13 @@ void Runtime::propagate() {
   if (stale_writes_ != 0)
     fail(std::to_string(stale_writes_) + " write(s) moved earlier but the later write is still in the trace: "
          "the program writes a modifiable twice in one execution");
+  // A modifiable whose write re-execution removed must be written again, or be discarded, or have
+  // no live reader: else a live read keeps a value no execution wrote (from scratch it would be a
+  // read of an unwritten modifiable).
+  for (const ModBase* m : unwritten_)
+    if (!m->dead && !m->writer && !m->input && !m->external && m->readers)
+      fail("modifiable " + hex(m->name) + " lost its write in re-execution but is still read by live trace");
+  unwritten_.clear();
   collect_dead();
 }
 
@@ -324,7 +333,10 @@ void Runtime::kill(Node* n) {
     case Kind::Write: {
       auto* w = static_cast<WriteNode*>(n);
       if (w->flag) --stale_writes_;
-      if (w->mod->writer == w) w->mod->writer = nullptr;
+      if (w->mod->writer == w) {
+        w->mod->writer = nullptr;
+        if (finger_) unwritten_.push_back(w->mod);  // in re-execution: checked at the end of propagate()
+      }
       break;
     }
     case Kind::IWrite: {
@@ -384,6 +396,7 @@ void Runtime::reset() {
     Scope s(*this, om_.base(), nullptr);
     discard(om_.base(), nullptr);
   }
+  unwritten_.clear();
   collect_dead();
 }
 

@@ -38,6 +38,7 @@
 //    propagate().
 //  * Misuse throws kmr::ContractError with a message naming it: reading an unwritten modifiable,
 //    writing a modifiable twice in one execution, an allocation key used twice in one execution,
+//    a modifiable still read after re-execution removed its only write,
 //    writing an input inside a run, trace operations outside a run or inside an undo hook,
 //    propagate/change/release during a run, releasing an input that still has readers. (A write that
 //    would affect an earlier read is also refused; with write-once modifiables it is a defensive
@@ -506,7 +507,9 @@ class Runtime {
 
   template <class T, class... K>
   Mod<T>* alloc(const Label& label, const K&... keys) {
-    return alloc_impl<Mod<T>>(label, nullptr, keys...);
+    Mod<T>* m = alloc_impl<Mod<T>>(label, nullptr, keys...);
+    if (m->external) fail(std::string("allocation ") + label.name + ": key of a traceable reused by a plain allocation");
+    return m;
   }
   // A traceable value created by the computation (§1 item 1; a kinetic certificate): keyed like
   // alloc (the same key inside the re-executed interval returns the same traceable, with the value
@@ -854,7 +857,7 @@ class Runtime {
     for (KeyedNode* n = chain(h, anchor); n; n = n->hnext) {
       if (n->hash != h || n->tag != tag<M>() || n->kind != Kind::MemoStart) continue;
       auto* m = static_cast<M*>(n);
-      if (m->label->hash != label.hash || !(m->key == key)) continue;
+      if ((m->label != &label && std::strcmp(m->label->name, label.name) != 0) || !(m->key == key)) continue;
       if (!in_window(m) || !OrderList::before(m->end, finger_)) continue;
       if (!best || OrderList::before(m, best)) best = m;
     }
@@ -876,6 +879,7 @@ class Runtime {
   std::uint32_t fresh_ordinal_ = 0;  // fresh allocations so far in that scope
   std::uint64_t stale_writes_ = 0;   // live writes superseded by an earlier write
   HookId hook_serial_ = 0;
+  std::vector<ModBase*> unwritten_;   // modifiables whose writer was discarded in this propagation
   std::vector<ReadNode*> heap_;
   std::vector<KeyedNode*> buckets_;
   std::size_t indexed_ = 0;

@@ -89,15 +89,18 @@ std::vector<long long> static_certified_filter(const std::vector<long long>& val
 
 // ---- next greater: destination-passing memo ----------------------------------------------------
 namespace {
-constexpr Label kNgSearch{"ng.search"}, kNg{"ng"}, kNgCell{"ng.cell"}, kNgOut{"ng.out"};
+constexpr Label kNgSearch{"ng.search"}, kNg{"ng"}, kNgCell{"ng.cell"}, kNgOut{"ng.out"}, kNgBox{"ng.box"};
 
 // ΔML `mfun search`: the first element of l greater than t; the result depends on the reads.
 Mod<long long>* ng_search(Runtime* rt, List* l, long long t) {
   return rt->memo_box<long long>(kNgSearch, std::make_tuple(l, t), [rt, l, t](Mod<long long>* dest) {
     rt->read(l, [rt, t, dest](const Cell& c) {
       if (c.nil) rt->write(dest, kNoGreater);
-      else if (c.head > t) rt->write(dest, c.head);
-      else rt->read(ng_search(rt, c.tail, t), [rt, dest](long long v) { rt->write(dest, v); });
+      else if (c.head > t) {
+        // ΔML `Box.put` then `Box.get`: a fresh box read right after its write (§1 item 5).
+        Mod<long long>* box = rt->put<long long>(kNgBox, c.head);
+        rt->read(box, [rt, dest](long long v) { rt->write(dest, v); });
+      } else rt->read(ng_search(rt, c.tail, t), [rt, dest](long long v) { rt->write(dest, v); });
     });
   });
 }

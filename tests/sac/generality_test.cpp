@@ -353,4 +353,169 @@ TEST(SacGenerality, S1_3_SignatureIncludesWrittenValuesAndMemoResults) {
   EXPECT_NE(sig(1, 2), sig(1, 4)) << "a different memo result under the same key";
 }
 
+// Review (issue 8 §1 item 5): memo reuse compares the full key, label included, not the label's
+// hash (as allocation reuse does): two labels whose hashes collide are different calls.
+TEST(SacGenerality, S1_3_MemoReuseComparesTheLabelNotItsHash) {
+  RecordProperty("claim", "S1.3.1-change-propagation");
+  Label la("memo-a"), lb("memo-b");
+  lb.hash = la.hash;  // a 64-bit collision, forced
+  Runtime rt;
+  auto* x = rt.input<int>(kIn, 1, 0);
+  Mod<int>* out = rt.run([&] {
+    auto* o = rt.alloc<int>(kOut);
+    rt.read(x, [&, o](int v) {
+      int r = v == 0 ? rt.memo<int>(la, 5, [] { return 1; }) : rt.memo<int>(lb, 5, [] { return 2; });
+      rt.write(o, r);
+    });
+    return o;
+  });
+  EXPECT_EQ(rt.deref(out), 1);
+  rt.change(x, 1);
+  rt.propagate();
+  EXPECT_EQ(rt.deref(out), 2) << "memo-b must not reuse memo-a's call";
+  EXPECT_EQ(rt.stats().memo_hits, 0u);
+}
+
+// Review (§1 item 1): a traceable's key used twice in one execution is a contract error, in the
+// initial run and when the first creation reused the previous execution's traceable.
+TEST(SacGenerality, MisuseATraceableKeyCreatedTwiceInOneExecution) {
+  std::string e = error_of([&] {
+    Runtime rt;
+    rt.run([&] {
+      rt.traceable<bool>(kCert, true, 7);
+      rt.traceable<bool>(kCert, false, 7);
+      return 0;
+    });
+  });
+  EXPECT_NE(e.find("used twice in one execution"), std::string::npos) << e;
+  Runtime rt;
+  auto* x = rt.input<int>(kIn, 1, 1);
+  rt.run([&] {
+    rt.read(x, [&](int v) {
+      for (int i = 0; i < v; ++i) rt.traceable<bool>(kCert, true, 7);
+    });
+    return 0;
+  });
+  rt.change(x, 2);
+  e = error_of([&] { rt.propagate(); });
+  EXPECT_NE(e.find("used twice in one execution"), std::string::npos) << e;
+}
+
+// Review (§1 item 1): a key that named a plain allocation cannot come back as a traceable, nor a
+// traceable's key as a plain allocation (which would then read the owner's value as if written).
+TEST(SacGenerality, MisuseATraceableKeyReusedByAPlainAllocationOrBack) {
+  for (int first = 0; first < 2; ++first) {
+    Runtime rt;
+    auto* x = rt.input<int>(kIn, 1, first);
+    auto* o = rt.input<int>(kOut, 1, 0);
+    (void)o;
+    Mod<int>* out = rt.run([&] {
+      auto* res = rt.alloc<int>(kOut, 0);
+      rt.read(x, [&, res](int v) {
+        Mod<bool>* c = v == 1 ? rt.traceable<bool>(kCert, true, 7) : rt.alloc<bool>(kCert, 7);
+        if (v == 0) rt.write(c, false);
+        rt.read(c, [&, res](bool b) { rt.write(res, b ? 1 : 0); });
+      });
+      return res;
+    });
+    EXPECT_EQ(rt.deref(out), first);
+    rt.change(x, 1 - first);
+    std::string e = error_of([&] { rt.propagate(); });
+    EXPECT_NE(e.find(first == 0 ? "key reused by a plain allocation" : "key of a traceable reused by a plain allocation"),
+              std::string::npos)
+        << "first=" << first << ": " << e;
+  }
+}
+
+// Review (§1 item 2): when a reused memo call lies between a certificate's old registration and
+// its re-creation, the predecessor's hook runs at the memo hit, before the re-creation (the
+// re-created certificate is then a new traceable); identity keeps the registry right either way.
+TEST(SacGenerality, S1_3_HookBeforeAReusedMemoRunsBeforeTheRecreation) {
+  RecordProperty("claim", "S1.3.3-traceable-undo");
+  Runtime rt;
+  auto* x = rt.input<int>(kIn, 1, 0);
+  struct Reg {
+    Mod<bool>* cert;
+    HookId hook;
+  };
+  std::map<int, Reg> registry;
+  std::vector<std::string> events;
+  auto certificate = [&] {
+    Mod<bool>* c = rt.traceable<bool>(kCert, true, 7);
+    HookId id = rt.on_discard(kHook, [&registry, &events](HookId self) {
+      events.push_back("undo#" + std::to_string(self));
+      auto r = registry.find(7);
+      if (r != registry.end() && r->second.hook == self) registry.erase(r);
+    });
+    registry[7] = Reg{c, id};
+    events.push_back("register#" + std::to_string(id));
+  };
+  rt.run([&] {
+    rt.read(x, [&](int v) {
+      if (v == 0) certificate();  // before the memo call in the first execution
+      rt.memo<int>(kG, 1, [] { return 0; });
+      if (v == 1) certificate();  // after it in the second
+    });
+    return 0;
+  });
+  Mod<bool>* first = registry.at(7).cert;
+  (void)first;
+  rt.change(x, 1);
+  rt.propagate();
+  EXPECT_EQ(rt.stats().memo_hits, 1u);
+  EXPECT_EQ(events, (std::vector<std::string>{"register#1", "undo#1", "register#2"}));
+  ASSERT_EQ(registry.count(7), 1u);
+  EXPECT_EQ(registry.at(7).hook, 2u);
+}
+
+// Review (§1 item 5): a modifiable read right after its write (ΔML `Box.put` then `Box.get`, the
+// write the last trace operation) is written in this execution; it was refused as unwritten.
+TEST(SacGenerality, S1_3_ReadRightAfterItsWrite) {
+  RecordProperty("claim", "S1.3.1-change-propagation");
+  Runtime rt;
+  auto* x = rt.input<int>(kIn, 1, 3);
+  Mod<int>* out = rt.run([&] {
+    auto* o = rt.alloc<int>(kOut);
+    rt.read(x, [&, o](int v) {
+      Mod<int>* b = rt.put<int>(kBox, v * 2);
+      rt.read(b, [&, o](int w) { rt.write(o, w + 1); });
+    });
+    return o;
+  });
+  EXPECT_EQ(rt.deref(out), 7);
+  rt.change(x, 5);
+  rt.propagate();
+  EXPECT_EQ(rt.deref(out), 11);
+}
+
+// Review (§1 items 3, 4): re-execution that drops a modifiable's only write while a read of it
+// outside the re-executed interval stays live would leave that read on a stale value (a
+// from-scratch run refuses the read as unwritten); propagate() reports it.
+TEST(SacGenerality, MisuseAWriteDroppedWhileItsReadStays) {
+  auto program = [](Runtime& rt, Mod<int>* x) {
+    return rt.run([&rt, x] {
+      auto* d = rt.alloc<int>(kBox);
+      rt.read(x, [&rt, d](int v) {
+        if (v > 0) rt.write(d, v);
+      });
+      auto* o = rt.alloc<int>(kOut);
+      rt.read(d, [&rt, o](int w) { rt.write(o, w); });
+      return o;
+    });
+  };
+  Runtime rt;
+  auto* x = rt.input<int>(kIn, 1, 1);
+  Mod<int>* o = program(rt, x);
+  EXPECT_EQ(rt.deref(o), 1);
+  rt.change(x, 2);
+  rt.propagate();
+  EXPECT_EQ(rt.deref(o), 2);
+  rt.change(x, 0);
+  std::string e = error_of([&] { rt.propagate(); });
+  EXPECT_NE(e.find("lost its write"), std::string::npos) << e;
+  Runtime scratch;
+  std::string f = error_of([&] { program(scratch, scratch.input<int>(kIn, 1, 0)); });
+  EXPECT_NE(f.find("before it was written"), std::string::npos) << f;
+}
+
 }  // namespace
