@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <random>
 
 #include "exact/error.hpp"
@@ -200,4 +202,97 @@ TEST(WellspacedDynamic, InsertingAtASteinerVertex) {
   input.push_back(s);
   WellSpacedSet<2> fresh(input);
   EXPECT_EQ(ws.canonical_graph(), fresh.canonical_graph());
+}
+
+// Issue 11, §1: degenerate inputs at every (ρ, β) a user may choose. The 100 collinear points at
+// ρ = 2, β = 4 and ρ = 3, β = 6 ended in "no double-precision point found in the picking region"
+// (the Steiner direction was truncated too coarsely to hit a cell that exceeds the ρ-ball by a
+// sliver); each output is judged by the exact brute force.
+namespace {
+struct RhoBeta {
+  double rho, beta;
+};
+// ρ ∈ [1.1, 4], β from just above ρ to 2ρ; ρ near 1 makes large outputs in 3D/4D, so the
+// sweeps narrow with the dimension (the CLI sweep in spec/wellspaced.md covers the rest)
+const RhoBeta kSweep2[] = {{1.1, 1.2}, {1.1, 3}, {1.5, 3}, {2, 3}, {2, 4}, {2.5, 5}, {3, 6}, {4, 4.5}, {4, 8}};
+const RhoBeta kSweep3[] = {{1.5, 3}, {2, 3}, {2, 4}, {3, 6}, {4, 4.5}, {4, 8}};
+const RhoBeta kSweep4[] = {{3, 6}, {4, 4.5}, {4, 8}};
+const RhoBeta kSweep4Small[] = {{2, 3}, {2, 4}};  // not cospherical: |M| ≈ 110, 20 s each
+
+template <std::size_t D>
+void degenerate_sweep(std::size_t n, const std::vector<RhoBeta>& sweep,
+                      std::vector<gen::Kind> kinds = {std::begin(gen::kDegenerateKinds), std::end(gen::kDegenerateKinds)}) {
+  for (auto k : kinds)
+    for (auto [rho, beta] : sweep) {
+      auto input = gen::points<D>(k, n, 1);
+      std::sort(input.begin(), input.end());
+      Params p;
+      p.rho = rho;
+      p.beta = beta;
+      std::string what = std::string(gen::name(k)) + " D=" + std::to_string(D) + " n=" + std::to_string(input.size()) +
+                         " rho=" + std::to_string(rho) + " beta=" + std::to_string(beta);
+      try {
+        auto t0 = std::chrono::steady_clock::now();
+        WellSpacedSet<D> ws(input, p);
+        check_output<D>(input, ws, what);
+        std::printf("  %s: |M| = %zu, %.2f s\n", what.c_str(), ws.vertices().size(),
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      } catch (const std::exception& e) {
+        ADD_FAILURE() << what << ": " << e.what();
+      }
+    }
+}
+}  // namespace
+
+TEST(WellspacedStatic, T3_3_4_DegenerateFamiliesOverRhoBeta2D) {
+  RecordProperty("claim", "T3.3.4");
+  degenerate_sweep<2>(40, {std::begin(kSweep2), std::end(kSweep2)});
+}
+TEST(WellspacedStatic, T3_3_4_DegenerateFamiliesOverRhoBeta3D) {
+  RecordProperty("claim", "T3.3.4");
+  degenerate_sweep<3>(8, {std::begin(kSweep3), std::end(kSweep3)});
+}
+TEST(WellspacedStatic, T3_3_4_DegenerateFamiliesOverRhoBeta4D) {
+  RecordProperty("claim", "T3.3.4");
+  degenerate_sweep<4>(5, {std::begin(kSweep4), std::end(kSweep4)});
+  degenerate_sweep<4>(5, {std::begin(kSweep4Small), std::end(kSweep4Small)},
+                      {gen::Kind::grid_fine, gen::Kind::collinear, gen::Kind::axis_line, gen::Kind::cocircular});
+}
+TEST(WellspacedStatic, T3_3_4_HundredCollinearPointsIssue11) {
+  RecordProperty("claim", "T3.3.4");
+  for (auto k : {gen::Kind::collinear, gen::Kind::axis_line})
+    for (auto [rho, beta] : {RhoBeta{2, 3}, RhoBeta{2, 4}, RhoBeta{3, 6}}) {
+      auto input = gen::points<2>(k, 100, 1);
+      Params p;
+      p.rho = rho;
+      p.beta = beta;
+      WellSpacedSet<2> ws(input, p);
+      check_output<2>(input, ws, std::string(gen::name(k)) + " rho=" + std::to_string(rho) + " beta=" + std::to_string(beta));
+    }
+  auto grid = gen::points<2>(gen::Kind::grid_fine, 400, 1);
+  ASSERT_EQ(grid.size(), 400u);
+  for (auto [rho, beta] : {RhoBeta{2, 3}, RhoBeta{2, 4}}) {
+    Params p;
+    p.rho = rho;
+    p.beta = beta;
+    WellSpacedSet<2> ws(grid, p);
+    check_output<2>(grid, ws, "20x20 grid rho=" + std::to_string(rho) + " beta=" + std::to_string(beta));
+  }
+}
+// ρ close to 1: the exact rank thresholds ρ^{2r} grow to millions of bits; the run is refused with
+// a message instead of running for minutes (issue 11).
+TEST(WellspacedInput, RhoTooCloseToOneIsRefused) {
+  std::vector<Point<2>> three = {{0.5, 0.5}, {0.52, 0.5}, {0.9, 0.1}};
+  Params p;
+  p.rho = 1.0000001;
+  p.beta = 3;
+  try {
+    WellSpacedSet<2> ws(three, p);
+    ADD_FAILURE() << "rho = 1.0000001 was accepted";
+  } catch (const kmr::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("too close to 1"), std::string::npos) << e.what();
+  }
+  p.rho = 1.01;  // reachable: runs
+  WellSpacedSet<2> ws(three, p);
+  check_output<2>(three, ws, "rho=1.01");
 }
