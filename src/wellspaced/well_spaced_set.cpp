@@ -854,8 +854,9 @@ struct WellSpacedSet<D>::Impl {
   // ---------- construction, updates ----------
   // Refuses (InputError) a run whose exact rank thresholds are out of reach. Ranks run from
   // ⌊log_ρ NN_min⌋ to r_max, and the thresholds ρ^{2r} are exact rationals of 2|r|·b bits (b = the
-  // significant bits of the double ρ). With the smallest leaf 2^-L (leaves are Θ(lfs), Lemma 3.1.5;
-  // NN_M ≥ lfs/c by Lemma 3.3.3, c = 2ρ/(ρ−1)), |r_min| ≈ log_ρ(2^{L}·c). The measured cost grows
+  // significant bits of the double ρ). With the smallest leaf 2^-L (leaves are Θ(lfs), Lemma 3.1.5),
+  // the ranks span about log_ρ(2^L·√D) (the size constant c = 2ρ/(ρ−1) of Lemma 3.3.3 would widen
+  // this by log_ρ c; the measured runs did not need it). The measured cost grows
   // faster than linearly in 2|r|·b (3 points, 2D: 18k bits 0.45 s, 83k 2.7 s, 207k 37 s; issue 11:
   // ρ = 1.0000001 ran for minutes silently), so more than 2^17 bits is refused with a message.
   void refuse_out_of_reach(int depth) const {
@@ -1010,6 +1011,65 @@ struct WellSpacedSet<D>::Impl {
     return us;
   }
 
+  // The indexes the canonical graph does not show (issue 11 §2), checked after every command of
+  // the Lemma 3.4.2 property: readers are exactly the inverse of the reads, sources exactly the
+  // inverse of the targets, every vertex in the leaf locate() gives (and listed there), leaves are
+  // the tree's leaves, nothing pending, valid adjacency caches equal the tree's adjacency.
+  std::string check_internal_indexes() const {
+    auto name = [](const OpKey& k) { return "(" + fmt_point<D>(k.v) + " @" + k.t.str() + ")"; };
+    if (!pending.empty()) return std::to_string(pending.size()) + " operations pending";
+    std::size_t reads = 0;
+    for (const auto& [k, op] : ops) {
+      for (const K& s : op.reads) {
+        ++reads;
+        auto it = readers.find(s);
+        if (it == readers.end() || std::count(it->second.begin(), it->second.end(), k) != 1)
+          return "square " + s.str() + " read by " + name(k) + " does not list it once as a reader";
+      }
+      for (const OpKey& t : op.targets) {
+        auto it = ops.find(t);
+        if (it == ops.end()) return name(k) + " targets a missing operation " + name(t);
+        if (std::count(it->second.sources.begin(), it->second.sources.end(), k) != 1)
+          return name(t) + " does not list its source " + name(k) + " once";
+      }
+      for (const OpKey& src : op.sources) {
+        auto it = ops.find(src);
+        if (it == ops.end() || std::count(it->second.targets.begin(), it->second.targets.end(), k) != 1)
+          return name(k) + " lists a source " + name(src) + " that does not target it once";
+      }
+    }
+    std::size_t listed = 0;
+    for (const auto& [s, rs] : readers) {
+      listed += rs.size();
+      for (const OpKey& k : rs) {
+        auto it = ops.find(k);
+        if (it == ops.end() || std::count(it->second.reads.begin(), it->second.reads.end(), s) != 1)
+          return name(k) + " is a reader of " + s.str() + " without reading it";
+      }
+    }
+    if (listed != reads) return "reader lists hold " + std::to_string(listed) + " entries for " + std::to_string(reads) + " reads";
+    auto tl = tree.leaves();
+    if (tl.size() != leaves.size()) return "leaf store holds " + std::to_string(leaves.size()) + " squares, the tree " + std::to_string(tl.size());
+    std::size_t inside = 0;
+    for (const K& l : tl) {
+      auto it = leaves.find(l);
+      if (it == leaves.end()) return "tree leaf " + l.str() + " missing from the leaf store";
+      const Leaf& L = it->second;
+      inside += L.verts.size();
+      for (const Pt& x : L.verts)
+        if (!(tree.locate(x) == l) || !vtx.count(x) || !(vtx.at(x).leaf == l))
+          return "vertex " + fmt_point<D>(x) + " listed in " + l.str() + " but located elsewhere";
+      if (L.adjacent_ok) {
+        auto want = tree.adjacent_leaves(l);
+        if (want.size() != L.adjacent.size()) return "stale adjacency cache at " + l.str();
+        for (std::size_t i = 0; i < want.size(); ++i)
+          if (!(L.adjacent[i]->key == want[i])) return "stale adjacency cache at " + l.str();
+      }
+    }
+    if (inside != vtx.size()) return std::to_string(vtx.size()) + " vertices, " + std::to_string(inside) + " listed in leaves";
+    return "";
+  }
+
   std::vector<std::string> canonical_graph() const {
     std::vector<std::string> out;
     for (const K& l : tree.leaves()) out.push_back("S " + l.str());
@@ -1063,6 +1123,10 @@ std::vector<Point<D>> WellSpacedSet<D>::input() const {
 template <std::size_t D>
 std::vector<std::string> WellSpacedSet<D>::canonical_graph() const {
   return impl_->canonical_graph();
+}
+template <std::size_t D>
+std::string WellSpacedSet<D>::check_internal_indexes() const {
+  return impl_->check_internal_indexes();
 }
 template <std::size_t D>
 std::vector<std::string> WellSpacedSet<D>::tree_internal_nodes() const {
