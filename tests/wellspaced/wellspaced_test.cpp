@@ -449,3 +449,33 @@ TEST(WellspacedStatic, L3_3_12_SameColourFillsAreIndependent) {
   EXPECT_GT(pairs, 100u) << "too few same-colour fill pairs: the check would be vacuous";
   RecordProperty("pairs", std::to_string(pairs));
 }
+
+// Locality (Theorem 3.4.3, Lemma 3.3.16) by counts: inserting and erasing a point 2^-k from an
+// input vertex of 1500 uniform points touches (obsolete + fresh + inconsistent operations) at most
+// C·log₂ Δ operations, C = 80 (measured ≤ 61, spec/wellspaced.md), Δ = the spread of the input with
+// the point; the bound is far below the operations of the graph, so marking every reader (or
+// re-running everything) is caught.
+TEST(WellspacedDynamic, T3_4_3_TouchedOperationsPerUpdateWithinCLogSpread) {
+  RecordProperty("claim", "T3.4.3");
+  auto input = gen::points<2>(gen::Kind::uniform, 1500, 17);
+  WellSpacedSet<2> ws(input);
+  const std::uint64_t ops = ws.stats().ops;
+  for (int k : {10, 20, 30}) {
+    Point<2> p = input[input.size() / 2];
+    p[0] += std::ldexp(p[0] < 0.5 ? 1.0 : -1.0, -k);
+    double dmin = 1e300, dmax = 0;
+    for (const auto& a : input) {
+      double d = std::hypot(a[0] - p[0], a[1] - p[1]);
+      dmin = std::min(dmin, d);
+      for (const auto& b : {input.front(), input.back()}) dmax = std::max(dmax, std::hypot(a[0] - b[0], a[1] - b[1]));
+    }
+    const double log_spread = std::log2(dmax / dmin);
+    for (const UpdateStats& u : {ws.insert(p), ws.erase(p)}) {
+      std::printf("  k = %d: touched %llu, log2 spread %.1f, ratio %.1f (graph: %llu operations)\n", k,
+                  static_cast<unsigned long long>(u.touched()), log_spread, double(u.touched()) / log_spread,
+                  static_cast<unsigned long long>(ops));
+      EXPECT_LE(double(u.touched()), 80 * log_spread) << "k = " << k;
+    }
+    ASSERT_LT(80 * log_spread, 0.5 * double(ops)) << "the bound would not catch a global re-run";
+  }
+}
