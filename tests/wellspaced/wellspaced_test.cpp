@@ -479,3 +479,21 @@ TEST(WellspacedDynamic, T3_4_3_TouchedOperationsPerUpdateWithinCLogSpread) {
     ASSERT_LT(80 * log_spread, 0.5 * double(ops)) << "the bound would not catch a global re-run";
   }
 }
+
+// The Steiner-choice fallbacks of issue 11 (fine direction, fraction ladder) run in both tiers:
+// the collinear inputs at ρ = 2, β = 4 and ρ = 3, β = 6 need them; output and graph equal the
+// exact-only run.
+TEST(WellspacedStatic, IntervalTierEqualsExactTierOnSliverCells) {
+  for (auto [rho, beta] : {std::pair{2.0, 4.0}, std::pair{3.0, 6.0}})
+    for (auto k : {gen::Kind::collinear, gen::Kind::axis_line}) {
+      auto in = gen::points<2>(k, 100, 1);
+      Params p, exact;
+      p.rho = exact.rho = rho;
+      p.beta = exact.beta = beta;
+      exact.exact_only = true;
+      WellSpacedSet<2> fast(in, p), slow(in, exact);
+      const std::string what = std::string(gen::name(k)) + " rho " + std::to_string(rho);
+      ASSERT_EQ(coords<2>(fast.vertices()), coords<2>(slow.vertices())) << what;
+      EXPECT_EQ(fast.canonical_graph(), slow.canonical_graph()) << what;
+    }
+}
