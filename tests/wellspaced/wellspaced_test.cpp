@@ -217,7 +217,7 @@ struct RhoBeta {
 const RhoBeta kSweep2[] = {{1.1, 1.2}, {1.1, 3}, {1.5, 3}, {2, 3}, {2, 4}, {2.5, 5}, {3, 6}, {4, 4.5}, {4, 8}};
 const RhoBeta kSweep3[] = {{1.5, 3}, {2, 3}, {2, 4}, {3, 6}, {4, 4.5}, {4, 8}};
 const RhoBeta kSweep4[] = {{3, 6}, {4, 4.5}, {4, 8}};
-const RhoBeta kSweep4Small[] = {{2, 3}, {2, 4}};  // not cospherical: |M| ≈ 110, 20 s each
+const RhoBeta kSweep4Small[] = {{2, 3}, {2, 4}};  // collinear only: cospherical makes |M| ≈ 110, 20 s each
 
 template <std::size_t D>
 void degenerate_sweep(std::size_t n, const std::vector<RhoBeta>& sweep,
@@ -255,8 +255,7 @@ TEST(WellspacedStatic, T3_3_4_DegenerateFamiliesOverRhoBeta3D) {
 TEST(WellspacedStatic, T3_3_4_DegenerateFamiliesOverRhoBeta4D) {
   RecordProperty("claim", "T3.3.4");
   degenerate_sweep<4>(5, {std::begin(kSweep4), std::end(kSweep4)});
-  degenerate_sweep<4>(5, {std::begin(kSweep4Small), std::end(kSweep4Small)},
-                      {gen::Kind::grid_fine, gen::Kind::collinear, gen::Kind::axis_line, gen::Kind::cocircular});
+  degenerate_sweep<4>(5, {std::begin(kSweep4Small), std::end(kSweep4Small)}, {gen::Kind::collinear, gen::Kind::axis_line});
 }
 TEST(WellspacedStatic, T3_3_4_HundredCollinearPointsIssue11) {
   RecordProperty("claim", "T3.3.4");
@@ -432,7 +431,7 @@ TEST(WellspacedStatic, L3_3_12_SameColourFillsAreIndependent) {
   RecordProperty("claim", "L3.3.12");
   std::size_t pairs = 0;
   for (auto k : gen::kAllKinds) {
-    auto input = gen::points<2>(k, 200, 5);
+    auto input = gen::points<2>(k, 100, 5);
     WellSpacedSet<2> ws(input);
     pairs += check_same_colour_fills<2>(ws, std::string(gen::name(k)) + " 2D");
   }
