@@ -27,7 +27,7 @@ endfunction()
 # Property tests (LABEL prop) run with a fixed RapidCheck seed so CI is reproducible;
 # override with RC_PARAMS="seed=N" to replay or explore.
 function(kmr_gtest name)
-  cmake_parse_arguments(T "" "LABEL;SEED;TIMEOUT" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(T "" "LABEL;SEED;TIMEOUT;RC_RUNS" "SOURCES;LIBS" ${ARGN})
   add_executable(${name} ${T_SOURCES})
   target_link_libraries(${name} PRIVATE ${T_LIBS} GTest::gtest GTest::gtest_main)
   if(T_LABEL STREQUAL "prop")
@@ -40,8 +40,11 @@ function(kmr_gtest name)
     set(T_TIMEOUT 600)
   endif()
   set(env "")
+  if(NOT T_RC_RUNS)
+    set(T_RC_RUNS 100)  # RC_RUNS: cases per property (long state-machine sequences use fewer)
+  endif()
   if(T_LABEL STREQUAL "prop")
-    set(env "RC_PARAMS=seed=${T_SEED} max_success=100 verbose_progress=0")
+    set(env "RC_PARAMS=seed=${T_SEED} max_success=${T_RC_RUNS} verbose_progress=0")
   endif()
   gtest_discover_tests(${name}
     DISCOVERY_MODE PRE_TEST

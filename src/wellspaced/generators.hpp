@@ -15,7 +15,13 @@
 
 namespace kmr::wellspaced::gen {
 
-enum class Kind { uniform, clustered, line, plane, sphere, grid, close_pair, boundary };
+enum class Kind { uniform, clustered, line, plane, sphere, grid, close_pair, boundary,
+                  // degenerate families with non-dyadic spacing (issue 11): a regular grid of
+                  // ⌈n^{1/D}⌉^D points i/(m−1); n evenly spaced points i/(n−1) on the diagonal, on
+                  // the axis line x_2 = .. = x_D = 1/2; the integer points of a circle (in the first
+                  // two axes, the rest 1/2) and of a sphere of radius 25 (2D), 9 (3D), 5 (4D) scaled by
+                  // 1/64 (exactly cocircular / cospherical), a seeded subset of n of them
+                  grid_fine, collinear, axis_line, cocircular, cospherical };
 inline const char* name(Kind k) {
   switch (k) {
     case Kind::uniform: return "uniform";
@@ -26,6 +32,11 @@ inline const char* name(Kind k) {
     case Kind::grid: return "grid";
     case Kind::close_pair: return "close_pair";
     case Kind::boundary: return "boundary";
+    case Kind::grid_fine: return "grid_fine";
+    case Kind::collinear: return "collinear";
+    case Kind::axis_line: return "axis_line";
+    case Kind::cocircular: return "cocircular";
+    case Kind::cospherical: return "cospherical";
   }
   return "?";
 }
@@ -39,6 +50,9 @@ inline double dyadic01(std::mt19937_64& rng, int bits = 20) {
 }
 
 template <std::size_t D>
+std::vector<Point<D>> degenerate_points(Kind kind, std::size_t n, std::uint64_t seed);
+
+template <std::size_t D>
 std::vector<Point<D>> points(Kind kind, std::size_t n, std::uint64_t seed) {
   std::mt19937_64 rng(seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(kind) + 1);
   std::set<Point<D>> out;
@@ -46,6 +60,7 @@ std::vector<Point<D>> points(Kind kind, std::size_t n, std::uint64_t seed) {
     for (auto& x : p) x = std::clamp(x, 0.0, 1.0);
     out.insert(p);
   };
+  if (kind >= Kind::grid_fine) return degenerate_points<D>(kind, n, seed);
   std::size_t guard = 0;
   while (out.size() < n && guard++ < 100 * n + 1000) {
     Point<D> p;
@@ -101,11 +116,66 @@ std::vector<Point<D>> points(Kind kind, std::size_t n, std::uint64_t seed) {
         for (std::size_t i = 0; i < k; ++i) p[rng() % D] = static_cast<double>(rng() % 2);
         break;
       }
+      default:
+        break;
     }
     add(p);
   }
   return {out.begin(), out.end()};
 }
+
+// The degenerate families (Kind::grid_fine .. Kind::cospherical): n points, deterministic in seed.
+template <std::size_t D>
+std::vector<Point<D>> degenerate_points(Kind kind, std::size_t n, std::uint64_t seed) {
+  std::vector<Point<D>> pts;
+  if (kind == Kind::grid_fine) {
+    std::size_t m = 2;
+    while (std::pow(double(m), double(D)) < double(n)) ++m;
+    std::array<std::size_t, D> idx{};
+    for (;;) {
+      Point<D> p;
+      for (std::size_t i = 0; i < D; ++i) p[i] = double(idx[i]) / double(m - 1);
+      pts.push_back(p);
+      std::size_t i = 0;
+      while (i < D && ++idx[i] == m) idx[i++] = 0;
+      if (i == D) break;
+    }
+    std::sort(pts.begin(), pts.end());
+    return pts;
+  }
+  if (kind == Kind::collinear || kind == Kind::axis_line) {
+    for (std::size_t j = 0; j < n; ++j) {
+      Point<D> p;
+      for (std::size_t i = 0; i < D; ++i) p[i] = kind == Kind::collinear || i == 0 ? double(j) / double(n - 1) : 0.5;
+      pts.push_back(p);
+    }
+    return pts;
+  }
+  // integer points of Σ x_i² = R² over the first k axes (k = 2 for a circle, D for a sphere)
+  const std::size_t k = kind == Kind::cocircular ? 2 : D;
+  const int R = k == 2 ? 25 : k == 3 ? 9 : 5;
+  std::array<int, D> x{};
+  for (std::size_t i = 0; i < k; ++i) x[i] = -R;
+  for (;;) {
+    int s = 0;
+    for (std::size_t i = 0; i < k; ++i) s += x[i] * x[i];
+    if (s == R * R) {
+      Point<D> p;
+      for (std::size_t i = 0; i < D; ++i) p[i] = 0.5 + (i < k ? x[i] / 64.0 : 0.0);
+      pts.push_back(p);
+    }
+    std::size_t i = 0;
+    while (i < k && ++x[i] > R) x[i++] = -R;
+    if (i == k) break;
+  }
+  std::mt19937_64 rng(seed);
+  std::shuffle(pts.begin(), pts.end(), rng);
+  if (pts.size() > n) pts.resize(n);
+  std::sort(pts.begin(), pts.end());
+  return pts;
+}
+inline constexpr Kind kDegenerateKinds[] = {Kind::grid_fine, Kind::collinear, Kind::axis_line, Kind::cocircular,
+                                            Kind::cospherical};
 
 // Theorem 3.4.5's lower-bound input (§3.4.2, Fig. 3.10): [0,1]^D tiled by 2^{tiles_log2·D} gadget
 // boxes of side h = 2^-tiles_log2. Each gadget has an input vertex at its centre and a grid of

@@ -116,6 +116,7 @@ struct WellSpacedSet<D>::Impl {
     if (!(std::isfinite(p.beta) && p.beta > p.rho)) throw InputError("beta must be a finite number > rho");
     if (p.rho > 64 || p.beta > 256) throw InputError("rho/beta too large (rho ≤ 64, beta ≤ 256)");
     params = p;
+    refuse_out_of_reach(0);  // r_max = ⌊log_ρ √D⌋ alone can be out of reach
     rho2 = Q(p.rho) * Q(p.rho);
     beta2 = Q(p.beta) * Q(p.beta);
     kappa = static_cast<int>(std::floor(1.0 + 6.0 * p.beta * p.rho * std::sqrt(double(D)) * (1 + 1e-12))) + 1;
@@ -569,10 +570,20 @@ struct WellSpacedSet<D>::Impl {
     stats.dispatches++;
   }
 
-  // Pick w ∈ Vor^{(ρ,β)}(v): toward the farthest vertex x* of the cell, at a squared distance
-  // between ρ²NN² and min(β²NN², |vx*|²), rounded to doubles, verified exactly. The direction is
-  // x* − v truncated to a grid of spacing 2^{ℓ(r*)−20} (r* = rank of |vx*|), so it is a function
-  // of v, NN and the cell only — the same in both tiers.
+  // Pick w ∈ Vor^{(ρ,β)}(v) (cell ∩ {ρ²NN² ≤ |vw|² < β²NN²}), a double, verified exactly.
+  // Candidates, in order (the first that is exactly in the picking region wins):
+  //  1. toward the farthest vertex x* of the cell, the direction x* − v truncated to a grid of
+  //     spacing 2^{ℓ(r*)−20} (r* = rank of |vx*|), at squared distances between ρ²NN² and
+  //     min(β²NN², |d|²) (fractions fr below);
+  //  2. the same with the direction truncated to 2^{ℓ(r*)−k}, k as large as the exact floor allows
+  //     (≤ 45), and a ladder of fractions toward both ends: when the cell pokes out of the ρ-ball
+  //     only by a sliver (collinear and grid inputs: the rounding of earlier Steiner vertices makes
+  //     near-degenerate cells), the coarse direction misses it (issue 11);
+  //  3. exact tier only: the doubles around the exact point of segment v x* at the middle of the
+  //     sliver (the segment lies in the convex cell), each coordinate rounded down and up.
+  // Candidates 1–2 are functions of v, NN and the cell only (the same in both tiers); the interval
+  // tier defers 3 to the exact tier. Only a sliver thinner than the double spacing near x* (no
+  // double within one ulp of that point of segment v x*) is left, reported as a ContractError.
   template <class NT>
   Pt pick(const std::array<NT, D>& vq, const Pt& v, const Pt& nn, const NT& nn2, const Polytope<D, NT>& P) {
     const typename Polytope<D, NT>::Vert* far = nullptr;
@@ -584,35 +595,81 @@ struct WellSpacedSet<D>::Impl {
         far = &x;
       }
     }
-    const int e = ell(rank_in<NT>(fd)) - 20;  // 2^e ≥ |vx*|·2^-22: at most 2^23 steps per axis
-    Pt xs;
-    for (std::size_t i = 0; i < D; ++i) {
-      const NT& off = far->x[i];  // P is relative to v
-      xs[i] = v[i] + std::ldexp(floor_div_pow2<NT>(off, e), e);
-    }
-    double n2 = 0, F = 0;
-    for (std::size_t i = 0; i < D; ++i) {
-      n2 += (nn[i] - v[i]) * (nn[i] - v[i]);
-      F += (xs[i] - v[i]) * (xs[i] - v[i]);
-    }
     const NT lo2 = sq<NT>(params.rho) * nn2, bmax = sq<NT>(params.beta) * nn2;
-    const double l = params.rho * params.rho * n2, h = std::min(params.beta * params.beta * n2, F);
-    // fractions of the way from ρ²NN² to min(β²NN², |vx*|²), tried in order; 0.2 first gave the
-    // smallest outputs against CGAL Mesh_2 (bench/wellspaced_mesh2; spec/wellspaced.md)
-    const double fr[] = {0.2, 0.1, 0.35, 0.05, 0.5, 0.7, 0.9, 0.025};
-    for (double f : fr) {
-      if (!(F > 0)) break;
-      double lam = std::sqrt((l + f * (h - l)) / F);
-      Pt w;
-      for (std::size_t i = 0; i < D; ++i) w[i] = std::clamp(v[i] + lam * (xs[i] - v[i]), 0.0, 1.0);
+    double n2 = 0;
+    for (std::size_t i = 0; i < D; ++i) n2 += (nn[i] - v[i]) * (nn[i] - v[i]);
+    const double l = params.rho * params.rho * n2;
+    auto in_region = [&](const Pt& w) {
       auto wq = relative_to<NT, D>(w, v);
       NT d = dist2<NT, D>(wq, vq);
-      if (d < lo2 || !(d < bmax)) continue;
-      if (!P.contains(wq)) continue;
-      return w;
+      return !(d < lo2) && d < bmax && P.contains(wq);
+    };
+    // the candidates along the ray toward x* truncated to the grid 2^(ℓ(r*) − k)
+    const int r_far = rank_in<NT>(fd);
+    auto along = [&](int k, const double* fr, std::size_t nf, Pt& out) {
+      const int e = ell(r_far) - k;
+      Pt xs;
+      for (std::size_t i = 0; i < D; ++i) xs[i] = v[i] + std::ldexp(floor_div_pow2<NT>(far->x[i], e), e);
+      double F = 0;
+      for (std::size_t i = 0; i < D; ++i) F += (xs[i] - v[i]) * (xs[i] - v[i]);
+      if (!(F > 0)) return false;
+      const double h = std::min(params.beta * params.beta * n2, F);
+      for (std::size_t j = 0; j < nf; ++j) {
+        double lam = std::sqrt((l + fr[j] * (h - l)) / F);
+        Pt w;
+        for (std::size_t i = 0; i < D; ++i) w[i] = std::clamp(v[i] + lam * (xs[i] - v[i]), 0.0, 1.0);
+        if (in_region(w)) {
+          out = w;
+          return true;
+        }
+      }
+      return false;
+    };
+    Pt w;
+    // 1. fractions of the way from ρ²NN² to min(β²NN², |vx*|²); 0.2 first gave the smallest
+    // outputs against CGAL Mesh_2 (bench/wellspaced_mesh2; spec/wellspaced.md)
+    static constexpr double fr[] = {0.2, 0.1, 0.35, 0.05, 0.5, 0.7, 0.9, 0.025};
+    if (along(20, fr, std::size(fr), w)) return w;
+    // 2. the finest grid the exact floor allows: |x*_i − v_i| < ρ^{r*+1} ≤ 2ρ√D·ℓ(r*), so
+    // |x*_i − v_i| / 2^{ℓ−k} < 2ρ√D·2^k < 2^52
+    const int kmax = std::min(45, 51 - static_cast<int>(std::ceil(std::log2(2 * params.rho * std::sqrt(double(D))))));
+    static constexpr double ladder[] = {0.5,        0.25,        0.75,        0.125,       0.875,
+                                        1.0 / 16,   15.0 / 16,   1.0 / 64,    63.0 / 64,   1.0 / 256,
+                                        255.0 / 256, 0x1p-12,    1 - 0x1p-12, 0x1p-16,     1 - 0x1p-16,
+                                        0x1p-20,    1 - 0x1p-20, 0x1p-26,     1 - 0x1p-26, 0x1p-32,
+                                        1 - 0x1p-32, 0x1p-40,    1 - 0x1p-40};
+    if (kmax > 20 && along(kmax, ladder, std::size(ladder), w)) return w;
+    if constexpr (is_interval_v<NT>) {
+      throw Uncertain();  // 3. is exact-tier only
+    } else {
+      // 3. p = v + λ(x* − v) with |vp|² = (lo + hi)/2, lo = ρ²NN², hi = min(β²NN², |vx*|²): the
+      // segment is in the cell, so p is in the picking region; try the doubles around p.
+      const Q hi = fd < bmax ? fd : bmax;
+      const double lam_d = std::sqrt((lo2 + hi).template convert_to<double>() / 2 / fd.template convert_to<double>());
+      // λ ∈ (0, 1] with λ²|vx*|² ∈ [lo, hi] (hi excluded when it is β²NN²), by bisection from
+      // a double estimate
+      Q lam = std::min(lam_d, 1.0), a = 0, b = 1;
+      for (int it = 0; it < 400; ++it) {
+        Q d = lam * lam * fd;
+        if (d < lo2) a = lam;
+        else if (d > hi || (d == hi && hi == bmax)) b = lam;
+        else break;
+        lam = (a + b) / 2;
+      }
+      std::array<Q, D> p;
+      for (std::size_t i = 0; i < D; ++i) p[i] = Q(v[i]) + lam * far->x[i];
+      for (int mask = 0; mask < (1 << D); ++mask) {
+        for (std::size_t i = 0; i < D; ++i) {
+          double c = p[i].template convert_to<double>();
+          Q cq = c;
+          if ((mask >> i) & 1) c = cq < p[i] ? std::nextafter(c, 2.0) : c;
+          else c = cq > p[i] ? std::nextafter(c, -1.0) : c;
+          w[i] = std::clamp(c, 0.0, 1.0);
+        }
+        if (in_region(w)) return w;
+      }
+      throw ContractError("no double-precision point in the picking region: the cell exceeds the ρ-ball by less than the double spacing");
     }
-    if constexpr (is_interval_v<NT>) throw Uncertain();  // let the exact tier report it
-    throw ContractError("no double-precision point found in the picking region (degenerate cell)");
   }
   // ⌊x / 2^e⌋ as a double, for |x / 2^e| < 2^52 (exact there).
   template <class NT>
@@ -795,6 +852,35 @@ struct WellSpacedSet<D>::Impl {
   }
 
   // ---------- construction, updates ----------
+  // Refuses (InputError) a run whose exact rank thresholds are out of reach. Ranks run from
+  // ⌊log_ρ NN_min⌋ to r_max, and the thresholds ρ^{2r} are exact rationals of 2|r|·b bits (b = the
+  // significant bits of the double ρ). With the smallest leaf 2^-L (leaves are Θ(lfs), Lemma 3.1.5),
+  // the ranks span about log_ρ(2^L·√D) (the size constant c = 2ρ/(ρ−1) of Lemma 3.3.3 would widen
+  // this by log_ρ c; the measured runs did not need it). The measured cost grows
+  // faster than linearly in 2|r|·b (3 points, 2D: 18k bits 0.45 s, 83k 2.7 s, 207k 37 s; issue 11:
+  // ρ = 1.0000001 ran for minutes silently), so more than 2^17 bits is refused with a message.
+  void refuse_out_of_reach(int depth) const {
+    int ex = 0;
+    const double m = std::frexp(params.rho, &ex);  // ρ = m·2^ex, m ∈ [0.5, 1)
+    std::uint64_t mant = static_cast<std::uint64_t>(std::ldexp(m, 53));
+    int bits = 53;
+    while (bits > 1 && !(mant & 1)) {
+      mant >>= 1;
+      --bits;
+    }
+    const double ranks = (depth * std::log(2.0) + 0.5 * std::log(double(D))) / std::log(params.rho);
+    const double work = 2 * ranks * bits;
+    if (work > 0x1p17) {
+      char msg[400];
+      std::snprintf(msg, sizeof msg,
+                    "rho = %.17g is too close to 1 for this input: about %.0f ranks between the smallest "
+                    "square and the domain, with exact rank thresholds rho^(2r) of about %.0f bits (limit 131072); "
+                    "use a larger rho or one with fewer significant bits (e.g. 1 + 2^-k)",
+                    params.rho, ranks, work);
+      throw InputError(msg);
+    }
+  }
+
   void construct(const std::vector<Pt>& input) {
     auto t0 = std::chrono::steady_clock::now();
     if (input.size() < 2) throw InputError("at least 2 input points are needed (got " + std::to_string(input.size()) + ")");
@@ -805,6 +891,9 @@ struct WellSpacedSet<D>::Impl {
     }
     std::vector<Pt> sorted(seen.begin(), seen.end());
     tree.build(sorted);  // QTBuild
+    int depth = 0;
+    for (const K& l : tree.leaves()) depth = std::max(depth, l.level);
+    refuse_out_of_reach(depth);
     for (const K& l : tree.leaves()) leaf_of(l);
     for (const Pt& p : sorted) {
       Vtx V;
@@ -922,6 +1011,65 @@ struct WellSpacedSet<D>::Impl {
     return us;
   }
 
+  // The indexes the canonical graph does not show (issue 11 §2), checked after every command of
+  // the Lemma 3.4.2 property: readers are exactly the inverse of the reads, sources exactly the
+  // inverse of the targets, every vertex in the leaf locate() gives (and listed there), leaves are
+  // the tree's leaves, nothing pending, valid adjacency caches equal the tree's adjacency.
+  std::string check_internal_indexes() const {
+    auto name = [](const OpKey& k) { return "(" + fmt_point<D>(k.v) + " @" + k.t.str() + ")"; };
+    if (!pending.empty()) return std::to_string(pending.size()) + " operations pending";
+    std::size_t reads = 0;
+    for (const auto& [k, op] : ops) {
+      for (const K& s : op.reads) {
+        ++reads;
+        auto it = readers.find(s);
+        if (it == readers.end() || std::count(it->second.begin(), it->second.end(), k) != 1)
+          return "square " + s.str() + " read by " + name(k) + " does not list it once as a reader";
+      }
+      for (const OpKey& t : op.targets) {
+        auto it = ops.find(t);
+        if (it == ops.end()) return name(k) + " targets a missing operation " + name(t);
+        if (std::count(it->second.sources.begin(), it->second.sources.end(), k) != 1)
+          return name(t) + " does not list its source " + name(k) + " once";
+      }
+      for (const OpKey& src : op.sources) {
+        auto it = ops.find(src);
+        if (it == ops.end() || std::count(it->second.targets.begin(), it->second.targets.end(), k) != 1)
+          return name(k) + " lists a source " + name(src) + " that does not target it once";
+      }
+    }
+    std::size_t listed = 0;
+    for (const auto& [s, rs] : readers) {
+      listed += rs.size();
+      for (const OpKey& k : rs) {
+        auto it = ops.find(k);
+        if (it == ops.end() || std::count(it->second.reads.begin(), it->second.reads.end(), s) != 1)
+          return name(k) + " is a reader of " + s.str() + " without reading it";
+      }
+    }
+    if (listed != reads) return "reader lists hold " + std::to_string(listed) + " entries for " + std::to_string(reads) + " reads";
+    auto tl = tree.leaves();
+    if (tl.size() != leaves.size()) return "leaf store holds " + std::to_string(leaves.size()) + " squares, the tree " + std::to_string(tl.size());
+    std::size_t inside = 0;
+    for (const K& l : tl) {
+      auto it = leaves.find(l);
+      if (it == leaves.end()) return "tree leaf " + l.str() + " missing from the leaf store";
+      const Leaf& L = it->second;
+      inside += L.verts.size();
+      for (const Pt& x : L.verts)
+        if (!(tree.locate(x) == l) || !vtx.count(x) || !(vtx.at(x).leaf == l))
+          return "vertex " + fmt_point<D>(x) + " listed in " + l.str() + " but located elsewhere";
+      if (L.adjacent_ok) {
+        auto want = tree.adjacent_leaves(l);
+        if (want.size() != L.adjacent.size()) return "stale adjacency cache at " + l.str();
+        for (std::size_t i = 0; i < want.size(); ++i)
+          if (!(L.adjacent[i]->key == want[i])) return "stale adjacency cache at " + l.str();
+      }
+    }
+    if (inside != vtx.size()) return std::to_string(vtx.size()) + " vertices, " + std::to_string(inside) + " listed in leaves";
+    return "";
+  }
+
   std::vector<std::string> canonical_graph() const {
     std::vector<std::string> out;
     for (const K& l : tree.leaves()) out.push_back("S " + l.str());
@@ -975,6 +1123,10 @@ std::vector<Point<D>> WellSpacedSet<D>::input() const {
 template <std::size_t D>
 std::vector<std::string> WellSpacedSet<D>::canonical_graph() const {
   return impl_->canonical_graph();
+}
+template <std::size_t D>
+std::string WellSpacedSet<D>::check_internal_indexes() const {
+  return impl_->check_internal_indexes();
 }
 template <std::size_t D>
 std::vector<std::string> WellSpacedSet<D>::tree_internal_nodes() const {

@@ -92,6 +92,10 @@ class WellSpacedSet {
   // corner, operations by vertex coordinates (%a) and time (rank, D/F, color), one line per node
   // and per edge. Two graphs are isomorphic (Lemma 3.4.2) iff these vectors are equal.
   std::vector<std::string> canonical_graph() const;
+  // "" if the internal indexes are consistent (readers = inverse of reads, sources = inverse of
+  // targets, each vertex in the leaf locate() gives, nothing pending, adjacency caches equal the
+  // tree's), else the first inconsistency found. For tests (Lemma 3.4.2 property).
+  std::string check_internal_indexes() const;
   // Internal nodes of the balanced 2^D-tree as "level:k1,k2,...", sorted (tree identity).
   std::vector<std::string> tree_internal_nodes() const;
   // Squares (leaves) of the tree, same format.
