@@ -60,7 +60,7 @@ std::string anchor(const std::string& id) {
 }
 
 std::string audit_command(const std::string& claim, const Options& o) {
-  std::string c = "kmr audit --only " + claim;
+  std::string c = "kmr audit --only '" + claim + "$'";  // exact: T3.4.3 without T3.4.3-speed
   if (o.quick) c += " --quick";
   if (o.seed != Options{}.seed) c += " --seed " + std::to_string(o.seed);
   return c;

@@ -51,6 +51,8 @@ TEST(Ledger, ParsesSectionsRowsAndEscapedPipes) {
   EXPECT_EQ(s[0].rows[1].line, 10);
   EXPECT_EQ(s[1].rows.at(0).id, "Y1");
   EXPECT_THROW(parse_ledger("## A\n| a | b | c |\n"), std::runtime_error);
+  // an unescaped pipe inside a cell makes a 7th cell: the text after it would be lost
+  EXPECT_THROW(parse_ledger("## A\n| a | b | c | d | e | size |M| = 3 |\n"), std::runtime_error);
 }
 
 TEST(Ledger, EmbeddedLedgerIsSpecClaimsMdWithEveryRow) {
@@ -72,6 +74,43 @@ TEST(Ledger, ChecksBelongToTheirRow) {
   EXPECT_TRUE(check_belongs_to("T3.4.3-speed", "T3.4.3"));
   EXPECT_FALSE(check_belongs_to("T3.3.11", "T3.3.1"));
   EXPECT_FALSE(check_belongs_to("T3.4.3", "T3.4.3-speed"));
+}
+
+// --only is a prefix; "ID$" is exactly ID, the form of the report's replay commands.
+TEST(Report, OnlySelectsByPrefixOrExactly) {
+  EXPECT_TRUE(selected("T3.4.3-speed", "T3.4.3"));
+  EXPECT_TRUE(selected("T3.4.3", "T3."));
+  EXPECT_TRUE(selected("T3.4.3", ""));
+  EXPECT_TRUE(selected("T3.4.3", "T3.4.3$"));
+  EXPECT_FALSE(selected("T3.4.3-speed", "T3.4.3$"));
+  EXPECT_FALSE(selected("T3.4.3", "T3.4$"));
+  Options o;
+  o.only = "T3.4.3";
+  EXPECT_GE(select_checks(o).size(), 2u);  // T3.4.3 and T3.4.3-speed
+  // every check's replay command in a report names exactly that check
+  std::vector<Result> results;
+  for (const Check& c : all_checks()) {
+    Result r;
+    r.claim = c.claim;
+    r.title = c.title;
+    results.push_back(r);
+  }
+  auto dir = std::filesystem::temp_directory_path() / "kmr_only_test";
+  std::filesystem::remove_all(dir);
+  write_report(dir.string(), results, Options{}, parse_ledger(claims_ledger()));
+  std::string md = slurp(dir / "report.md");
+  std::size_t commands = 0;
+  for (std::size_t at = md.find("`kmr audit --only '"); at != std::string::npos; at = md.find("`kmr audit --only '", at + 1)) {
+    std::size_t b = at + 19, e = md.find('\'', b);
+    o.only = md.substr(b, e - b);
+    auto chosen = select_checks(o);
+    ASSERT_EQ(chosen.size(), 1u) << o.only;
+    EXPECT_EQ(chosen[0].claim + "$", o.only);
+    ++commands;
+  }
+  EXPECT_GE(commands, results.size());  // via rows repeat some
+  EXPECT_THROW(select_checks(Options{false, 20121, "T3.4$", {}}), kmr::InputError);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Report, CtestRegexNamesTheTestsOfACell) {
