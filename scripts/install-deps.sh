@@ -7,6 +7,7 @@ packages=(
   librapidcheck-dev libgtest-dev libgmock-dev libbenchmark-dev
   lcov clang-14 libclang-rt-14-dev llvm-14
   libxml2-utils
+  cmark-gfm
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -40,11 +40,25 @@ std::string inline_html(const std::string& md) {
   return out;
 }
 
-// A Markdown table cell: pipes escaped, no line breaks.
-std::string md_cell(const std::string& s) {
+// Plain text (a check's title, summary, figures, plot titles — not the ledger's Markdown) as Markdown
+// inline text on one line: every character Markdown or a GFM table could read as markup is
+// backslash-escaped (CommonMark: any ASCII punctuation may be), line breaks become spaces.
+std::string md_text(const std::string& s) {
   std::string r;
-  for (char c : s) r += c == '|' ? std::string("\\|") : c == '\n' ? std::string(" ") : std::string(1, c);
+  for (char c : s) {
+    if (c == '\n' || c == '\r') c = ' ';
+    if (std::string_view("\\`*_[]<>|&$~").find(c) != std::string_view::npos) r += '\\';
+    r += c;
+  }
   return r;
+}
+// Plain text as a Markdown code span (a fence longer than any backtick run inside it).
+std::string md_code(const std::string& s) {
+  std::size_t run = 0, longest = 0;
+  for (char c : s) longest = std::max(longest, run = c == '`' ? run + 1 : 0);
+  std::string fence(longest + 1, '`'), body;
+  for (char c : s) body += c == '\n' ? ' ' : c;
+  return longest ? fence + " " + body + " " + fence : fence + body + fence;
 }
 
 std::string file_stem(const std::string& claim) {
@@ -239,25 +253,26 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
     md << "\n## " << title << "\n";
     if (!notes[c].empty()) md << "\n" << notes[c] << "\n";
     for (const Entry& e : es) {
-      std::string id = e.row ? e.row->id : e.results.front()->claim;
+      std::string id = e.row ? e.row->id : md_text(e.results.front()->claim);
       md << "\n### " << id << " — " << e.verdict << "\n\n";
       if (e.row)
         md << "- **Claim.** " << e.row->claim << "\n- **Where.** " << e.row->where << "\n- **How it is checked.** " << e.row->check
            << "\n- **Tests.** " << e.row->tests << "\n";
       for (const Result* r : e.results) {
-        md << "- **Verdict (" << (e.via ? "via audit check " : "") << r->claim << ").** " << (r->verdict.pass ? "PASS" : "FAIL") << " — " << r->title
-           << (r->verdict.summary.empty() ? "" : ": " + r->verdict.summary) << " (" << fmt(r->seconds) << " s)\n";
-        if (!r->verdict.thesis.empty()) md << "- **Thesis's figure.** " << r->verdict.thesis << "\n";
+        md << "- **Verdict (" << (e.via ? "via audit check " : "") << md_text(r->claim) << ").** " << (r->verdict.pass ? "PASS" : "FAIL")
+           << " — " << md_text(r->title) << (r->verdict.summary.empty() ? "" : ": " + md_text(r->verdict.summary)) << " ("
+           << fmt(r->seconds) << " s)\n";
+        if (!r->verdict.thesis.empty()) md << "- **Thesis's figure.** " << md_text(r->verdict.thesis) << "\n";
       }
       if (e.verdict == "TODO") md << "- **Not checked yet:** " << todo_reason(e.row->status) << "\n";
       if (e.row) md << "- **Ledger status.** " << e.row->status << "\n";
-      for (const std::string& c : e.replay) md << "- **Replay.** `" << c << "`\n";
+      for (const std::string& c : e.replay) md << "- **Replay.** " << md_code(c) << "\n";
       for (const Result* r : e.results) {
         if (r->verdict.figures.empty()) continue;
-        md << "\n| " << r->claim << " figure | value |\n|---|---|\n";
-        for (const auto& [k, v] : r->verdict.figures) md << "| " << md_cell(k) << " | " << md_cell(v) << " |\n";
+        md << "\n| " << md_text(r->claim) << " figure | value |\n|---|---|\n";
+        for (const auto& [k, v] : r->verdict.figures) md << "| " << md_text(k) << " | " << md_text(v) << " |\n";
       }
-      for (std::size_t i = 0; i < e.plot_files.size(); ++i) md << "\n![" << e.plot_titles[i] << "](" << e.plot_files[i] << ")\n";
+      for (std::size_t i = 0; i < e.plot_files.size(); ++i) md << "\n![" << md_text(e.plot_titles[i]) << "](" << e.plot_files[i] << ")\n";
     }
   }
   write_file(fs::path(dir) / "report.md", md.str());

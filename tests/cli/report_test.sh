@@ -22,7 +22,14 @@ if [ $# -ge 5 ]; then
   [ "$plots" -eq "$svgs" ] && [ "$plots" -ge 10 ] && ok || bad "$svgs SVG files for $plots plots in the JSON"
   grep -q '"pass":false' "$tmp/a.json" && bad "the quick audit has a failing claim" || ok
 else
-  "$kmr" audit --quick --only L3.4.4 --report "$tmp/r" --json "$tmp/a.json" >"$tmp/out" 2>"$tmp/err"
+  # plus an included result whose every text is hostile to Markdown, HTML and SVG
+  cat >"$tmp/odd.json" <<'ODD'
+[{"claim":"ODD<&|`]x","title":"a | b < c & d `e` ]f[ $x_1 < y^2$ **","pass":true,"summary":"s | t <b>not bold</b> &amp;\nnext","seconds":0.5,
+  "thesis":"about 30 % | <i>","figures":{"n | m <x>":"1 | 2 `3`"},"plots":[{"title":"odd ](evil.svg) [x] <t> & | `c`",
+  "x":{"label":"x <&>","unit":"u|v","log":false,"categories":[]},"y":{"label":"y","unit":"","log":false,"categories":[]},
+  "series":[{"name":"s<&\"'>","points":[[1,2],[2,3]]}],"bounds":[]}]}]
+ODD
+  "$kmr" audit --quick --only L3.4.4 --report "$tmp/r" --json "$tmp/a.json" --include "$tmp/odd.json" >"$tmp/out" 2>"$tmp/err"
   rc=$?
   [ $rc -eq 0 ] && ok || bad "audit --report rc=$rc"
   [ -s "$tmp/err" ] && bad "stderr not empty without a terminal: $(head -c 300 "$tmp/err")" || ok
@@ -37,6 +44,19 @@ done
 xmllint --html --noout "$tmp/r/index.html" 2>"$tmp/h"
 if [ $? -eq 0 ] && [ ! -s "$tmp/h" ]; then ok; else bad "index.html: $(head -5 "$tmp/h")"; fi
 grep -q 'kmr_version":"' "$tmp/a.json" && ok || bad "JSON without kmr_version"
+# report.md as GitHub renders it (cmark-gfm, scripts/install-deps.sh): every SVG is an image, no
+# text of a check became markup, a | inside a figure stays in its cell
+if command -v cmark-gfm >/dev/null; then
+  cmark-gfm --unsafe -e table "$tmp/r/report.md" >"$tmp/md.html"  # --unsafe: raw HTML kept, so it shows
+  for f in "$tmp"/r/*.svg; do
+    [ "$(grep -c "<img src=\"$(basename "$f")\"" "$tmp/md.html")" -eq 1 ] && ok || bad "report.md does not show $(basename "$f") once"
+  done
+  [ "$(grep -c '<img ' "$tmp/md.html")" -eq "$n_svg" ] && ok || bad "report.md has images that are not the SVGs"
+  grep -q '<b>not bold\|<i>\|<t>' "$tmp/md.html" && bad "a check's text became HTML markup in report.md" || ok
+  grep -q '<td>n | m &lt;x&gt;</td>' "$tmp/md.html" || [ $# -ge 5 ] && ok || bad "a figure with | broke its table row"
+else
+  bad "cmark-gfm not installed (scripts/install-deps.sh): report.md not rendered"
+fi
 grep -q "src=\"http\|<script\|<link" "$tmp/r/index.html" && bad "index.html fetches something or runs a script" || ok
 # every ledger ID: first cell of each table row that is neither the header nor the rule
 awk -F'|' '/^\| / && !/^\| ID \|/ { gsub(/^ +| +$/, "", $2); print $2 }' "$claims" >"$tmp/ids"
