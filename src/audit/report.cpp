@@ -164,13 +164,18 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
   }
   ReportFiles files;
   std::map<const Result*, std::vector<std::string>> plot_files;  // every plot drawn once, in result order
-  for (const Result& r : results)
+  std::map<std::string, int> seen;  // a claim may come twice (run and --include): plot-C+2-1.svg, ...
+  for (const Result& r : results) {
+    std::string stem = "plot-" + file_stem(r.claim);
+    if (int k = ++seen[stem]; k > 1) stem += "+" + std::to_string(k);  // file_stem never writes '+'
+    stem += "-";
     for (std::size_t i = 0; i < r.verdict.plots.size(); ++i) {
-      std::string f = "plot-" + file_stem(r.claim) + "-" + std::to_string(i + 1) + ".svg";
+      std::string f = stem + std::to_string(i + 1) + ".svg";
       write_file(fs::path(dir) / f, svg::render(r.verdict.plots[i]));
       files.svgs.push_back(f);
       plot_files[&r].push_back(f);
     }
+  }
   auto build = [&](const LedgerRow* row, std::vector<const Result*> rs, bool via) {
     Entry e;
     e.row = row;

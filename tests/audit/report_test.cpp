@@ -237,6 +237,18 @@ TEST(Report, IncludedResultsRoundTripAndLandOnTheirLedgerRow) {
   EXPECT_EQ(md.find("**Verdict (via audit check T3.3.8).** FAIL", l339), md.find("**Verdict", l339));
   EXPECT_NE(md.find("\n### L3.3.10 — "), std::string::npos);
   EXPECT_EQ(md.find("\n### L3.3.10 — FAIL"), std::string::npos);  // "audit T3.3.8" is not L3.3.10's
+  // the same claim twice (a run and an --include of an earlier run): each keeps its own plot file
+  Result again = back[0];
+  again.verdict.plots.at(0).series.at(0).points.at(0).y = 42;
+  back.push_back(again);
+  auto twice = write_report((dir / "r2").string(), back, o, parse_ledger(claims_ledger()));
+  ASSERT_EQ(twice.svgs.size(), 2u);
+  EXPECT_NE(twice.svgs[0], twice.svgs[1]);
+  EXPECT_EQ(slurp(dir / "r2" / twice.svgs[0]).find("data-y=\"42\""), std::string::npos);
+  EXPECT_NE(slurp(dir / "r2" / twice.svgs[1]).find("data-y=\"42\""), std::string::npos);
+  std::string md2 = slurp(dir / "r2" / "report.md");
+  EXPECT_NE(md2.find("](" + twice.svgs[0] + ")"), std::string::npos);
+  EXPECT_NE(md2.find("](" + twice.svgs[1] + ")"), std::string::npos);
   std::ofstream(dir / "bad.json") << "[{\"claim\": \"x\"}]";
   EXPECT_THROW(read_json((dir / "bad.json").string()), kmr::InputError);
   EXPECT_THROW(read_json((dir / "missing.json").string()), kmr::InputError);
