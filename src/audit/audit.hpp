@@ -69,7 +69,7 @@ bool selected(const std::string& claim, const std::string& only);
 // The checks options.only selects, in registry order. Throws InputError naming the selector and
 // listing the known claim IDs when none matches.
 std::vector<Check> select_checks(const Options& options);
-// Runs the checks whose ID starts with options.only, in registry order (a throwing check FAILs).
+// Runs the checks options.only selects (select_checks), in registry order (a throwing check FAILs).
 // Throws InputError naming the prefix and listing the known claim IDs when none matches.
 std::vector<Result> run_checks(const Options& options);
 void print_table(const std::vector<Result>& results, std::ostream& out);
