@@ -153,14 +153,24 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
   if (ec || !fs::is_directory(dir)) throw InputError("cannot create report directory '" + dir + "'");
 
   // Attach each result to its ledger row: the row with the same ID, else the longest "ID-" prefix.
-  std::map<const Result*, const LedgerRow*> owner;
-  for (const Result& r : results) {
+  auto row_of = [&](const std::string& claim) {
     const LedgerRow* best = nullptr;
     for (const auto& s : ledger)
       for (const auto& row : s.rows)
-        if (check_belongs_to(r.claim, row.id) && (!best || row.id == r.claim || (best->id != r.claim && row.id.size() > best->id.size())))
+        if (check_belongs_to(claim, row.id) && (!best || row.id == claim || (best->id != claim && row.id.size() > best->id.size())))
           best = &row;
-    owner[&r] = best;
+    return best;
+  };
+  std::map<const Result*, const LedgerRow*> owner;
+  for (const Result& r : results) owner[&r] = row_of(r.claim);
+  // The audit's own checks (run or not): a row with one that did not run is NOT RUN, with its command.
+  std::map<const LedgerRow*, std::vector<std::string>> registered;
+  for (const Check& c : all_checks()) {
+    if (const LedgerRow* row = row_of(c.claim)) registered[row].push_back(c.claim);
+    for (const auto& s : ledger)
+      for (const auto& row : s.rows)
+        if (row_of(c.claim) != &row && (names_audit_check(row.tests, c.claim) || names_audit_check(row.check, c.claim)))
+          registered[&row].push_back(c.claim);
   }
   ReportFiles files;
   std::map<const Result*, std::vector<std::string>> plot_files;  // every plot drawn once, in result order
@@ -201,11 +211,13 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
     } else {
       e.verdict = "TESTS";
     }
+    if (row && e.results.empty() && !registered[row].empty() && (e.verdict == "TESTS" || e.verdict == "MEASURED")) {
+      e.verdict = "NOT RUN";  // the row has an audit check that this run did not include (--only)
+      for (const std::string& claim : registered[row]) e.replay.push_back(audit_command(claim, options));
+    }
     if (row) {
       std::string re = ctest_regex(row->tests);
       if (!re.empty()) e.replay.push_back("ctest --test-dir build -R '" + re + "'");
-      if (e.results.empty() && (e.verdict == "TESTS" || e.verdict == "MEASURED") && row->tests.find("audit") != std::string::npos)
-        e.verdict = "NOT RUN";  // the ledger names an audit check that this run did not include (--only)
     }
     return e;
   };

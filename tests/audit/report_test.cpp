@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <sstream>
 
 #include "audit/audit.hpp"
@@ -110,6 +111,19 @@ TEST(Report, OnlySelectsByPrefixOrExactly) {
   }
   EXPECT_GE(commands, results.size());  // via rows repeat some
   EXPECT_THROW(select_checks(Options{false, 20121, "T3.4$", {}}), kmr::InputError);
+  // a report of no results: every check of the registry is NOT RUN on its row, with its command
+  write_report(dir.string(), {}, Options{}, parse_ledger(claims_ledger()));
+  md = slurp(dir / "report.md");
+  std::set<std::string> want, got;
+  for (const Check& c : all_checks()) want.insert(c.claim);
+  for (std::size_t at = md.find("`kmr audit --only '"); at != std::string::npos; at = md.find("`kmr audit --only '", at + 1)) {
+    std::size_t b = at + 19, e = md.find("$'", b);
+    got.insert(md.substr(b, e - b));
+    std::size_t heading = md.rfind("\n### ", at);
+    EXPECT_NE(md.find(" — NOT RUN\n", heading), std::string::npos) << md.substr(heading, 40);
+    EXPECT_LT(md.find(" — NOT RUN\n", heading), at);
+  }
+  EXPECT_EQ(got, want);
   std::filesystem::remove_all(dir);
 }
 
