@@ -34,13 +34,13 @@ int audit_command(const Argv& argv) {
   options.only = args.value("only").value_or("");
   options.seed = static_cast<std::uint64_t>(args.integer("seed", 20121, 0, 1LL << 62));
   audit::select_checks(options);  // an --only without a match fails before any file is written
+  std::vector<audit::Result> included;  // read before --json truncates a file (it may be the same one)
+  if (auto path = args.value("include")) included = audit::read_json(*path);
   std::ofstream json;
   if (auto path = args.value("json")) {
     json.open(*path);
     if (!json) throw InputError("cannot write --json file '" + *path + "'");
   }
-  std::vector<audit::Result> included;
-  if (auto path = args.value("include")) included = audit::read_json(*path);  // before the run: fail fast
   std::vector<audit::LedgerSection> ledger;
   if (auto dir = args.value("report")) {  // fail before the run, not after it
     std::error_code ec;
