@@ -57,6 +57,10 @@ std::vector<Marker> markers(const std::string& svg, int* bounds = nullptr) {
 
 TEST(Svg, EscapesMarkupInTextAndAttributes) {
   EXPECT_EQ(escape("a<b & \"c\" 'd'>"), "a&lt;b &amp; &quot;c&quot; &apos;d&apos;&gt;");
+  EXPECT_EQ(escape("a\x01" "b\tc"), "a\xEF\xBF\xBD" "b\tc");
+  Document ctl(10, 10);
+  ctl.text(1, 1, "bell\x07 and escape\x1b[0m");
+  EXPECT_TRUE(xmllint_accepts(ctl.str())) << ctl.str();
   Document d(100, 50);
   d.title("<title> & co");
   d.text(1, 2, "x < y && \"z\"");
