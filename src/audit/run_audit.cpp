@@ -26,6 +26,12 @@ std::string json_escape(const std::string& s) {
   for (char c : s) {
     if (c == '"' || c == '\\') r += '\\';
     if (c == '\n') { r += "\\n"; continue; }
+    if (static_cast<unsigned char>(c) < 0x20) {  // JSON forbids raw control characters in strings
+      char u[8];
+      std::snprintf(u, sizeof u, "\\u%04x", static_cast<unsigned>(c));
+      r += u;
+      continue;
+    }
     r += c;
   }
   return r;

@@ -210,7 +210,7 @@ TEST(Report, PlotMarkersEqualTheJsonPointsAndEveryLedgerIdIsListed) {
 TEST(Report, IncludedResultsRoundTripAndLandOnTheirLedgerRow) {
   Result r;
   r.claim = "I2-root-solver-speed";
-  r.title = "bench \"quoted\"";
+  r.title = "bench \"quoted\" back\\slash\ttab\x01" "ctl\nline";  // control characters are escaped in JSON
   r.seconds = 0.25;
   r.verdict.pass = true;
   r.verdict.summary = "s";
@@ -234,6 +234,7 @@ TEST(Report, IncludedResultsRoundTripAndLandOnTheirLedgerRow) {
   write_json(back, b);
   EXPECT_EQ(a.str(), b.str());
   ASSERT_EQ(back.size(), 1u);
+  EXPECT_EQ(back[0].title, r.title);
   EXPECT_EQ(back[0].verdict.plots.at(0).series.at(0).points.at(0).y, 1.0 / 3);
   Options o;
   Result t338;  // L3.3.9's row names "audit T3.3.8": it shows that check's verdict
