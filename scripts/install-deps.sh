@@ -8,6 +8,7 @@ packages=(
   lcov clang-14 libclang-rt-14-dev llvm-14
   libxml2-utils
   libqhull-dev
+  cmark-gfm
 )
 missing=()
 for p in "${packages[@]}"; do

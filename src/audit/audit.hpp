@@ -17,7 +17,7 @@ namespace kmr::audit {
 struct Options {
   bool quick = false;          // smaller sizes (used by the ctest `audit` label)
   std::uint64_t seed = 20121;  // every random input derives from this seed
-  std::string only;            // run only the checks whose claim ID starts with this prefix
+  std::string only;            // run only the checks whose claim ID starts with this prefix ("ID$": exactly ID)
   // Called before each check (index from 0, count, claim ID) and once more with index == count at
   // the end; the CLI shows it on stderr when stderr is a terminal. Never writes to `out`.
   std::function<void(std::size_t, std::size_t, const std::string&)> progress;
@@ -65,7 +65,13 @@ struct Result {
   double seconds = 0;
   std::string replay;  // the command that reproduces it when it is not `kmr audit --only CLAIM` (e.g. a benchmark's)
 };
-// Runs the checks whose ID starts with options.only, in registry order (a throwing check FAILs).
+// Does --only selector `only` choose check `claim`: `claim` starts with `only`, or, when `only` ends
+// with "$", equals it without the "$" ("T3.4.3" chooses T3.4.3 and T3.4.3-speed, "T3.4.3$" only T3.4.3).
+bool selected(const std::string& claim, const std::string& only);
+// The checks options.only selects, in registry order. Throws InputError naming the selector and
+// listing the known claim IDs when none matches.
+std::vector<Check> select_checks(const Options& options);
+// Runs the checks options.only selects (select_checks), in registry order (a throwing check FAILs).
 // Throws InputError naming the prefix and listing the known claim IDs when none matches.
 std::vector<Result> run_checks(const Options& options);
 void print_table(const std::vector<Result>& results, std::ostream& out);

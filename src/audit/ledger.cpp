@@ -51,9 +51,9 @@ std::vector<LedgerSection> parse_ledger(std::string_view md) {
     if (t.empty() || t[0] != '|') continue;
     auto c = cells(t);
     if (c.empty() || c[0] == "ID" || c[0].rfind("---", 0) == 0) continue;
-    if (c.size() < 6)
+    if (c.size() != 6)  // more: an unescaped | inside a cell (write \|), which every Markdown host splits too
       throw std::runtime_error("claims ledger line " + std::to_string(n) + ": a table row needs 6 cells, has " +
-                               std::to_string(c.size()));
+                               std::to_string(c.size()) + (c.size() > 6 ? " (escape a | inside a cell as \\|)" : ""));
     if (sections.empty()) sections.push_back({"", "", {}});
     sections.back().rows.push_back({c[0], c[1], c[2], c[3], c[4], c[5], n});
   }

@@ -5,7 +5,7 @@
 // Guarantees (tests/audit/ledger_test): every table row whose first cell is not the header or the
 // |---| rule becomes one LedgerRow, in file order, under the last `## ` heading above it; an escaped
 // pipe `\|` stays inside its cell (as `|`); cells are trimmed; prose lines before a section's
-// first table (not HTML comments) form its note; a row with fewer than 6 cells throws
+// first table (not HTML comments) form its note; a row with other than 6 cells (e.g. an unescaped | in a cell) throws
 // std::runtime_error naming its line.
 #include <string>
 #include <string_view>

@@ -40,11 +40,25 @@ std::string inline_html(const std::string& md) {
   return out;
 }
 
-// A Markdown table cell: pipes escaped, no line breaks.
-std::string md_cell(const std::string& s) {
+// Plain text (a check's title, summary, figures, plot titles — not the ledger's Markdown) as Markdown
+// inline text on one line: every character Markdown or a GFM table could read as markup is
+// backslash-escaped (CommonMark: any ASCII punctuation may be), line breaks become spaces.
+std::string md_text(const std::string& s) {
   std::string r;
-  for (char c : s) r += c == '|' ? std::string("\\|") : c == '\n' ? std::string(" ") : std::string(1, c);
+  for (char c : s) {
+    if (c == '\n' || c == '\r') c = ' ';
+    if (std::string_view("\\`*_[]<>|&$~").find(c) != std::string_view::npos) r += '\\';
+    r += c;
+  }
   return r;
+}
+// Plain text as a Markdown code span (a fence longer than any backtick run inside it).
+std::string md_code(const std::string& s) {
+  std::size_t run = 0, longest = 0;
+  for (char c : s) longest = std::max(longest, run = c == '`' ? run + 1 : 0);
+  std::string fence(longest + 1, '`'), body;
+  for (char c : s) body += c == '\n' ? ' ' : c;
+  return longest ? fence + " " + body + " " + fence : fence + body + fence;
 }
 
 std::string file_stem(const std::string& claim) {
@@ -60,7 +74,7 @@ std::string anchor(const std::string& id) {
 }
 
 std::string audit_command(const std::string& claim, const Options& o) {
-  std::string c = "kmr audit --only " + claim;
+  std::string c = "kmr audit --only '" + claim + "$'";  // exact: T3.4.3 without T3.4.3-speed
   if (o.quick) c += " --quick";
   if (o.seed != Options{}.seed) c += " --seed " + std::to_string(o.seed);
   return c;
@@ -139,24 +153,39 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
   if (ec || !fs::is_directory(dir)) throw InputError("cannot create report directory '" + dir + "'");
 
   // Attach each result to its ledger row: the row with the same ID, else the longest "ID-" prefix.
-  std::map<const Result*, const LedgerRow*> owner;
-  for (const Result& r : results) {
+  auto row_of = [&](const std::string& claim) {
     const LedgerRow* best = nullptr;
     for (const auto& s : ledger)
       for (const auto& row : s.rows)
-        if (check_belongs_to(r.claim, row.id) && (!best || row.id == r.claim || (best->id != r.claim && row.id.size() > best->id.size())))
+        if (check_belongs_to(claim, row.id) && (!best || row.id == claim || (best->id != claim && row.id.size() > best->id.size())))
           best = &row;
-    owner[&r] = best;
+    return best;
+  };
+  std::map<const Result*, const LedgerRow*> owner;
+  for (const Result& r : results) owner[&r] = row_of(r.claim);
+  // The audit's own checks (run or not): a row with one that did not run is NOT RUN, with its command.
+  std::map<const LedgerRow*, std::vector<std::string>> registered;
+  for (const Check& c : all_checks()) {
+    if (const LedgerRow* row = row_of(c.claim)) registered[row].push_back(c.claim);
+    for (const auto& s : ledger)
+      for (const auto& row : s.rows)
+        if (row_of(c.claim) != &row && (names_audit_check(row.tests, c.claim) || names_audit_check(row.check, c.claim)))
+          registered[&row].push_back(c.claim);
   }
   ReportFiles files;
   std::map<const Result*, std::vector<std::string>> plot_files;  // every plot drawn once, in result order
-  for (const Result& r : results)
+  std::map<std::string, int> seen;  // a claim may come twice (run and --include): plot-C+2-1.svg, ...
+  for (const Result& r : results) {
+    std::string stem = "plot-" + file_stem(r.claim);
+    if (int k = ++seen[stem]; k > 1) stem += "+" + std::to_string(k);  // file_stem never writes '+'
+    stem += "-";
     for (std::size_t i = 0; i < r.verdict.plots.size(); ++i) {
-      std::string f = "plot-" + file_stem(r.claim) + "-" + std::to_string(i + 1) + ".svg";
+      std::string f = stem + std::to_string(i + 1) + ".svg";
       write_file(fs::path(dir) / f, svg::render(r.verdict.plots[i]));
       files.svgs.push_back(f);
       plot_files[&r].push_back(f);
     }
+  }
   auto build = [&](const LedgerRow* row, std::vector<const Result*> rs, bool via) {
     Entry e;
     e.row = row;
@@ -182,11 +211,13 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
     } else {
       e.verdict = "TESTS";
     }
+    if (row && e.results.empty() && !registered[row].empty() && (e.verdict == "TESTS" || e.verdict == "MEASURED")) {
+      e.verdict = "NOT RUN";  // the row has an audit check that this run did not include (--only)
+      for (const std::string& claim : registered[row]) e.replay.push_back(audit_command(claim, options));
+    }
     if (row) {
       std::string re = ctest_regex(row->tests);
       if (!re.empty()) e.replay.push_back("ctest --test-dir build -R '" + re + "'");
-      if (e.results.empty() && (e.verdict == "TESTS" || e.verdict == "MEASURED") && row->tests.find("audit") != std::string::npos)
-        e.verdict = "NOT RUN";  // the ledger names an audit check that this run did not include (--only)
     }
     return e;
   };
@@ -239,25 +270,26 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
     md << "\n## " << title << "\n";
     if (!notes[c].empty()) md << "\n" << notes[c] << "\n";
     for (const Entry& e : es) {
-      std::string id = e.row ? e.row->id : e.results.front()->claim;
+      std::string id = e.row ? e.row->id : md_text(e.results.front()->claim);
       md << "\n### " << id << " — " << e.verdict << "\n\n";
       if (e.row)
         md << "- **Claim.** " << e.row->claim << "\n- **Where.** " << e.row->where << "\n- **How it is checked.** " << e.row->check
            << "\n- **Tests.** " << e.row->tests << "\n";
       for (const Result* r : e.results) {
-        md << "- **Verdict (" << (e.via ? "via audit check " : "") << r->claim << ").** " << (r->verdict.pass ? "PASS" : "FAIL") << " — " << r->title
-           << (r->verdict.summary.empty() ? "" : ": " + r->verdict.summary) << " (" << fmt(r->seconds) << " s)\n";
-        if (!r->verdict.thesis.empty()) md << "- **Thesis's figure.** " << r->verdict.thesis << "\n";
+        md << "- **Verdict (" << (e.via ? "via audit check " : "") << md_text(r->claim) << ").** " << (r->verdict.pass ? "PASS" : "FAIL")
+           << " — " << md_text(r->title) << (r->verdict.summary.empty() ? "" : ": " + md_text(r->verdict.summary)) << " ("
+           << fmt(r->seconds) << " s)\n";
+        if (!r->verdict.thesis.empty()) md << "- **Thesis's figure.** " << md_text(r->verdict.thesis) << "\n";
       }
       if (e.verdict == "TODO") md << "- **Not checked yet:** " << todo_reason(e.row->status) << "\n";
       if (e.row) md << "- **Ledger status.** " << e.row->status << "\n";
-      for (const std::string& c : e.replay) md << "- **Replay.** `" << c << "`\n";
+      for (const std::string& c : e.replay) md << "- **Replay.** " << md_code(c) << "\n";
       for (const Result* r : e.results) {
         if (r->verdict.figures.empty()) continue;
-        md << "\n| " << r->claim << " figure | value |\n|---|---|\n";
-        for (const auto& [k, v] : r->verdict.figures) md << "| " << md_cell(k) << " | " << md_cell(v) << " |\n";
+        md << "\n| " << md_text(r->claim) << " figure | value |\n|---|---|\n";
+        for (const auto& [k, v] : r->verdict.figures) md << "| " << md_text(k) << " | " << md_text(v) << " |\n";
       }
-      for (std::size_t i = 0; i < e.plot_files.size(); ++i) md << "\n![" << e.plot_titles[i] << "](" << e.plot_files[i] << ")\n";
+      for (std::size_t i = 0; i < e.plot_files.size(); ++i) md << "\n![" << md_text(e.plot_titles[i]) << "](" << e.plot_files[i] << ")\n";
     }
   }
   write_file(fs::path(dir) / "report.md", md.str());

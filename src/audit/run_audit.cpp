@@ -26,6 +26,12 @@ std::string json_escape(const std::string& s) {
   for (char c : s) {
     if (c == '"' || c == '\\') r += '\\';
     if (c == '\n') { r += "\\n"; continue; }
+    if (static_cast<unsigned char>(c) < 0x20) {  // JSON forbids raw control characters in strings
+      char u[8];
+      std::snprintf(u, sizeof u, "\\u%04x", static_cast<unsigned>(c));
+      r += u;
+      continue;
+    }
     r += c;
   }
   return r;
@@ -69,16 +75,27 @@ std::string fmt(double x) {
   return b;
 }
 
-std::vector<Result> run_checks(const Options& options) {
+bool selected(const std::string& claim, const std::string& only) {
+  if (!only.empty() && only.back() == '$') return claim == only.substr(0, only.size() - 1);
+  return claim.rfind(only, 0) == 0;
+}
+
+std::vector<Check> select_checks(const Options& options) {
   std::vector<Check> chosen;
   std::string known;
   for (Check& check : all_checks()) {
     if (!known.empty()) known += ", ";
     known += check.claim;
-    if (check.claim.rfind(options.only, 0) == 0) chosen.push_back(std::move(check));
+    if (selected(check.claim, options.only)) chosen.push_back(std::move(check));
   }
   if (chosen.empty())
-    throw InputError("no claim matches --only '" + options.only + "'; known claim IDs (any prefix works, e.g. 'T3.' or 'A2.1'): " + known);
+    throw InputError("no claim matches --only '" + options.only +
+                     "'; known claim IDs (any prefix works, e.g. 'T3.' or 'A2.1'; 'ID$' matches exactly ID): " + known);
+  return chosen;
+}
+
+std::vector<Result> run_checks(const Options& options) {
+  std::vector<Check> chosen = select_checks(options);
   std::vector<Result> results;
   for (std::size_t i = 0; i < chosen.size(); ++i) {
     const Check& check = chosen[i];

@@ -19,7 +19,7 @@ int audit_command(const Argv& argv) {
                  "Runs every check of the claims ledger (spec/claims.md) on built-in seeded defaults and\n"
                  "prints a table: claim, verdict, measured figures. Exit status 1 if any claim fails.\n"
                  "  --quick   smaller inputs (what ctest runs)\n"
-                 "  --only    run only the claims whose ID starts with the prefix\n"
+                 "  --only    run only the claims whose ID starts with the prefix ('ID$': exactly ID)\n"
                  "  --json    also write the verdicts, figures and plot data as JSON to FILE\n"
                  "  --report  also write DIR/report.md, DIR/index.html (offline) and DIR/*.svg plots: one\n"
                  "            entry per ledger claim with verdict, figures and the command that replays it\n"
@@ -33,13 +33,14 @@ int audit_command(const Argv& argv) {
   options.quick = args.has("quick");
   options.only = args.value("only").value_or("");
   options.seed = static_cast<std::uint64_t>(args.integer("seed", 20121, 0, 1LL << 62));
+  audit::select_checks(options);  // an --only without a match fails before any file is written
+  std::vector<audit::Result> included;  // read before --json truncates a file (it may be the same one)
+  if (auto path = args.value("include")) included = audit::read_json(*path);
   std::ofstream json;
   if (auto path = args.value("json")) {
     json.open(*path);
     if (!json) throw InputError("cannot write --json file '" + *path + "'");
   }
-  std::vector<audit::Result> included;
-  if (auto path = args.value("include")) included = audit::read_json(*path);  // before the run: fail fast
   std::vector<audit::LedgerSection> ledger;
   if (auto dir = args.value("report")) {  // fail before the run, not after it
     std::error_code ec;

@@ -29,21 +29,17 @@ int bench_sac(const Argv& argv) {
   auto n = static_cast<std::size_t>(args.integer("n", 100000, 0, 100000000));
   auto edits = static_cast<std::size_t>(args.integer("edits", 200, 0, 100000000));
   auto seed = static_cast<std::uint64_t>(args.integer("seed", 20121, 0, 1LL << 62));
-  std::vector<std::string> names;
+  std::vector<std::string> names, only;
   for (const auto& p : sacprograms::list_programs()) names.push_back(p.name);
   names.push_back("exptree");
   if (auto p = args.value("program")) {
     if (std::find(names.begin(), names.end(), *p) == names.end()) throw InputError("kmr bench sac: unknown --program");
-    names = {*p};
+    only = {*p};
   }
-  // One program at a time so that progress can name it; the memory guard still refuses before any run.
-  for (const auto& name : names) sacprograms::check_bench_memory(name, n, seed);
   Progress progress(args.has("quiet"));
-  std::vector<sacprograms::BenchRow> rows;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    progress.message("kmr bench sac [" + std::to_string(i + 1) + "/" + std::to_string(names.size()) + "] " + names[i]);
-    for (auto& r : sacprograms::bench_all(n, edits, seed, {names[i]})) rows.push_back(std::move(r));
-  }
+  auto rows = sacprograms::bench_all(n, edits, seed, only, [&](std::size_t i, std::size_t count, const std::string& name) {
+    progress.message("kmr bench sac [" + std::to_string(i + 1) + "/" + std::to_string(count) + "] " + name);
+  });
   progress.done();
   bool ok = true;
   for (const auto& r : rows) ok = ok && r.output_ok;

@@ -194,19 +194,23 @@ void check_bench_memory(const std::string& program, std::size_t n, std::uint64_t
   }
 }
 
-std::vector<BenchRow> bench_all(std::size_t n, std::size_t edits, std::uint64_t seed, const std::vector<std::string>& only) {
-  std::vector<BenchRow> rows;
+std::vector<BenchRow> bench_all(std::size_t n, std::size_t edits, std::uint64_t seed, const std::vector<std::string>& only,
+                                const std::function<void(std::size_t, std::size_t, const std::string&)>& before) {
+  std::vector<std::string> names;
   auto wanted = [&](const std::string& s) { return only.empty() || std::find(only.begin(), only.end(), s) != only.end(); };
-  // List recursion nests one frame group per element: give the run a stack sized for n.
-  // Refuse before running anything if a wanted program's trace would not fit in memory.
   for (const auto& p : list_programs())
-    if (wanted(p.name)) check_bench_memory(p.name, n, seed);
-  if (wanted("exptree")) check_bench_memory("exptree", n, seed);
+    if (wanted(p.name)) names.push_back(p.name);
+  if (wanted("exptree")) names.push_back("exptree");
+  // Refuse before running anything if a wanted program's trace would not fit in memory.
+  for (const auto& name : names) check_bench_memory(name, n, seed);
+  // List recursion nests one frame group per element: give the run a stack sized for n.
+  std::vector<BenchRow> rows;
   std::size_t stack = std::max<std::size_t>(std::size_t{64} << 20, n * 2048);
   sac::with_stack(stack, [&] {
-    for (const auto& p : list_programs())
-      if (wanted(p.name)) rows.push_back(bench_list(p.name, n, edits, seed));
-    if (wanted("exptree")) rows.push_back(bench_exptree(n, edits, seed));
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      if (before) before(i, names.size(), names[i]);
+      rows.push_back(names[i] == "exptree" ? bench_exptree(n, edits, seed) : bench_list(names[i], n, edits, seed));
+    }
   });
   return rows;
 }

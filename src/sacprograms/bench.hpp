@@ -6,6 +6,7 @@
 // edit's output is checked against the static twin at the end of the run (a row with
 // output_ok = false reports a wrong answer, it is never hidden).
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,9 +30,11 @@ long long bench_value(const std::string& program, std::uint64_t r);  // a random
 BenchRow bench_list(const std::string& program, std::size_t n, std::size_t edits, std::uint64_t seed);
 BenchRow bench_exptree(std::size_t n, std::size_t edits, std::uint64_t seed);
 // All seven programs (map, filter, sum, quicksort, mergesort, quickhull, exptree), on a big stack,
-// after check_bench_memory for each wanted program.
+// after check_bench_memory for each wanted program. `before` (when set, e.g. progress) is called
+// before each program's run with (index from 0, number of programs, name).
 std::vector<BenchRow> bench_all(std::size_t n, std::size_t edits, std::uint64_t seed,
-                                const std::vector<std::string>& only = {});
+                                const std::vector<std::string>& only = {},
+                                const std::function<void(std::size_t, std::size_t, const std::string&)>& before = {});
 
 // Memory guard (bench_all runs it first): the bytes the initial run of `program` on n elements
 // holds, measured at n = 2048 and 16384 and extrapolated as n·(α + β·log2 n) plus the harness's

@@ -16,7 +16,10 @@ std::string escape(std::string_view s) {
       case '>': r += "&gt;"; break;
       case '"': r += "&quot;"; break;
       case '\'': r += "&apos;"; break;
-      default: r += c;
+      case '\t': case '\n': case '\r': r += c; break;
+      default:  // XML 1.0 has no other control characters, not even escaped: U+FFFD instead
+        if (static_cast<unsigned char>(c) < 0x20) r += "\xEF\xBF\xBD";
+        else r += c;
     }
   }
   return r;

@@ -12,7 +12,8 @@
 
 namespace kmr::svg {
 
-// XML escaping of & < > " ' (text and attribute values).
+// XML escaping of & < > " ' (text and attribute values); control characters other than tab and
+// line breaks, which XML 1.0 cannot hold, become U+FFFD.
 std::string escape(std::string_view s);
 // A coordinate or length: up to 6 significant digits, C locale; throws on nan/inf.
 std::string number(double x);

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <sstream>
 
 #include "audit/audit.hpp"
@@ -51,6 +52,8 @@ TEST(Ledger, ParsesSectionsRowsAndEscapedPipes) {
   EXPECT_EQ(s[0].rows[1].line, 10);
   EXPECT_EQ(s[1].rows.at(0).id, "Y1");
   EXPECT_THROW(parse_ledger("## A\n| a | b | c |\n"), std::runtime_error);
+  // an unescaped pipe inside a cell makes a 7th cell: the text after it would be lost
+  EXPECT_THROW(parse_ledger("## A\n| a | b | c | d | e | size |M| = 3 |\n"), std::runtime_error);
 }
 
 TEST(Ledger, EmbeddedLedgerIsSpecClaimsMdWithEveryRow) {
@@ -72,6 +75,56 @@ TEST(Ledger, ChecksBelongToTheirRow) {
   EXPECT_TRUE(check_belongs_to("T3.4.3-speed", "T3.4.3"));
   EXPECT_FALSE(check_belongs_to("T3.3.11", "T3.3.1"));
   EXPECT_FALSE(check_belongs_to("T3.4.3", "T3.4.3-speed"));
+}
+
+// --only is a prefix; "ID$" is exactly ID, the form of the report's replay commands.
+TEST(Report, OnlySelectsByPrefixOrExactly) {
+  EXPECT_TRUE(selected("T3.4.3-speed", "T3.4.3"));
+  EXPECT_TRUE(selected("T3.4.3", "T3."));
+  EXPECT_TRUE(selected("T3.4.3", ""));
+  EXPECT_TRUE(selected("T3.4.3", "T3.4.3$"));
+  EXPECT_FALSE(selected("T3.4.3-speed", "T3.4.3$"));
+  EXPECT_FALSE(selected("T3.4.3", "T3.4$"));
+  Options o;
+  o.only = "T3.4.3";
+  EXPECT_GE(select_checks(o).size(), 2u);  // T3.4.3 and T3.4.3-speed
+  // every check's replay command in a report names exactly that check
+  std::vector<Result> results;
+  for (const Check& c : all_checks()) {
+    Result r;
+    r.claim = c.claim;
+    r.title = c.title;
+    results.push_back(r);
+  }
+  auto dir = std::filesystem::temp_directory_path() / "kmr_only_test";
+  std::filesystem::remove_all(dir);
+  write_report(dir.string(), results, Options{}, parse_ledger(claims_ledger()));
+  std::string md = slurp(dir / "report.md");
+  std::size_t commands = 0;
+  for (std::size_t at = md.find("`kmr audit --only '"); at != std::string::npos; at = md.find("`kmr audit --only '", at + 1)) {
+    std::size_t b = at + 19, e = md.find('\'', b);
+    o.only = md.substr(b, e - b);
+    auto chosen = select_checks(o);
+    ASSERT_EQ(chosen.size(), 1u) << o.only;
+    EXPECT_EQ(chosen[0].claim + "$", o.only);
+    ++commands;
+  }
+  EXPECT_GE(commands, results.size());  // via rows repeat some
+  EXPECT_THROW(select_checks(Options{false, 20121, "T3.4$", {}}), kmr::InputError);
+  // a report of no results: every check of the registry is NOT RUN on its row, with its command
+  write_report(dir.string(), {}, Options{}, parse_ledger(claims_ledger()));
+  md = slurp(dir / "report.md");
+  std::set<std::string> want, got;
+  for (const Check& c : all_checks()) want.insert(c.claim);
+  for (std::size_t at = md.find("`kmr audit --only '"); at != std::string::npos; at = md.find("`kmr audit --only '", at + 1)) {
+    std::size_t b = at + 19, e = md.find("$'", b);
+    got.insert(md.substr(b, e - b));
+    std::size_t heading = md.rfind("\n### ", at);
+    EXPECT_NE(md.find(" — NOT RUN\n", heading), std::string::npos) << md.substr(heading, 40);
+    EXPECT_LT(md.find(" — NOT RUN\n", heading), at);
+  }
+  EXPECT_EQ(got, want);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Report, CtestRegexNamesTheTestsOfACell) {
@@ -157,7 +210,7 @@ TEST(Report, PlotMarkersEqualTheJsonPointsAndEveryLedgerIdIsListed) {
 TEST(Report, IncludedResultsRoundTripAndLandOnTheirLedgerRow) {
   Result r;
   r.claim = "I2-root-solver-speed";
-  r.title = "bench \"quoted\"";
+  r.title = "bench \"quoted\" back\\slash\ttab\x01" "ctl\nline";  // control characters are escaped in JSON
   r.seconds = 0.25;
   r.verdict.pass = true;
   r.verdict.summary = "s";
@@ -181,6 +234,7 @@ TEST(Report, IncludedResultsRoundTripAndLandOnTheirLedgerRow) {
   write_json(back, b);
   EXPECT_EQ(a.str(), b.str());
   ASSERT_EQ(back.size(), 1u);
+  EXPECT_EQ(back[0].title, r.title);
   EXPECT_EQ(back[0].verdict.plots.at(0).series.at(0).points.at(0).y, 1.0 / 3);
   Options o;
   Result t338;  // L3.3.9's row names "audit T3.3.8": it shows that check's verdict
@@ -198,6 +252,18 @@ TEST(Report, IncludedResultsRoundTripAndLandOnTheirLedgerRow) {
   EXPECT_EQ(md.find("**Verdict (via audit check T3.3.8).** FAIL", l339), md.find("**Verdict", l339));
   EXPECT_NE(md.find("\n### L3.3.10 — "), std::string::npos);
   EXPECT_EQ(md.find("\n### L3.3.10 — FAIL"), std::string::npos);  // "audit T3.3.8" is not L3.3.10's
+  // the same claim twice (a run and an --include of an earlier run): each keeps its own plot file
+  Result again = back[0];
+  again.verdict.plots.at(0).series.at(0).points.at(0).y = 42;
+  back.push_back(again);
+  auto twice = write_report((dir / "r2").string(), back, o, parse_ledger(claims_ledger()));
+  ASSERT_EQ(twice.svgs.size(), 2u);
+  EXPECT_NE(twice.svgs[0], twice.svgs[1]);
+  EXPECT_EQ(slurp(dir / "r2" / twice.svgs[0]).find("data-y=\"42\""), std::string::npos);
+  EXPECT_NE(slurp(dir / "r2" / twice.svgs[1]).find("data-y=\"42\""), std::string::npos);
+  std::string md2 = slurp(dir / "r2" / "report.md");
+  EXPECT_NE(md2.find("](" + twice.svgs[0] + ")"), std::string::npos);
+  EXPECT_NE(md2.find("](" + twice.svgs[1] + ")"), std::string::npos);
   std::ofstream(dir / "bad.json") << "[{\"claim\": \"x\"}]";
   EXPECT_THROW(read_json((dir / "bad.json").string()), kmr::InputError);
   EXPECT_THROW(read_json((dir / "missing.json").string()), kmr::InputError);

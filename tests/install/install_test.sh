@@ -13,7 +13,16 @@ test -f "$tmp/prefix/include/kmr/wellspaced/well_spaced_set.hpp"
 "$tmp/prefix/bin/kmr" --version | grep -q '^kmr '
 gen=()
 command -v ninja >/dev/null && gen=(-G Ninja)
-cmake -S "$consumer" -B "$tmp/build" "${gen[@]}" -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_BUILD_TYPE=Release >"$tmp/configure.log" ||
+# every layer folder of src/ (cli is the executable) is exported as kmr::<folder> with its headers,
+# whether it was made with kmr_layer() or by hand (a later hull or kmesh included)
+src=$(cd "$consumer/../../../src" && pwd)
+layers=$(cd "$src" && for d in */; do d=${d%/}; [ "$d" != cli ] && [ -f "$d/CMakeLists.txt" ] && echo "$d"; done | paste -sd ";")
+for l in ${layers//;/ }; do
+  ls "$src/$l"/*.hpp >/dev/null 2>&1 || continue
+  for h in "$src/$l"/*.hpp; do test -f "$tmp/prefix/include/kmr/$l/$(basename "$h")" || { echo "not installed: $l/$(basename "$h")"; exit 1; }; done
+done
+cmake -S "$consumer" -B "$tmp/build" "${gen[@]}" -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_BUILD_TYPE=Release \
+  "-DKMR_LAYERS=$layers" >"$tmp/configure.log" ||
   { cat "$tmp/configure.log"; exit 1; }
 cmake --build "$tmp/build" >"$tmp/build.log" || { cat "$tmp/build.log"; exit 1; }
 out=$("$tmp/build/consumer")

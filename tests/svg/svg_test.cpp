@@ -5,10 +5,12 @@
 
 #include <boost/property_tree/ptree.hpp>
 #include <boost/property_tree/xml_parser.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <sstream>
 
@@ -55,6 +57,10 @@ std::vector<Marker> markers(const std::string& svg, int* bounds = nullptr) {
 
 TEST(Svg, EscapesMarkupInTextAndAttributes) {
   EXPECT_EQ(escape("a<b & \"c\" 'd'>"), "a&lt;b &amp; &quot;c&quot; &apos;d&apos;&gt;");
+  EXPECT_EQ(escape("a\x01" "b\tc"), "a\xEF\xBF\xBD" "b\tc");
+  Document ctl(10, 10);
+  ctl.text(1, 1, "bell\x07 and escape\x1b[0m");
+  EXPECT_TRUE(xmllint_accepts(ctl.str())) << ctl.str();
   Document d(100, 50);
   d.title("<title> & co");
   d.text(1, 2, "x < y && \"z\"");
@@ -110,6 +116,54 @@ TEST(Plot, MarkersCarryExactlyTheGivenPoints) {
       ++k;
     }
   EXPECT_EQ(bounds, 2);
+}
+
+// Where a marker is drawn, not only what it says: the pixel position is a strictly increasing
+// affine function of x (of log10 x on a log axis), a strictly decreasing one of y (SVG y points
+// down), and inside the document. Read back from cx/cy with Boost.PropertyTree.
+void expect_affine(const std::vector<std::pair<double, double>>& data_px, bool increasing) {
+  ASSERT_GE(data_px.size(), 3u);
+  auto [d0, p0] = data_px.front();
+  auto [d1, p1] = data_px.back();
+  double slope = (p1 - p0) / (d1 - d0);
+  EXPECT_TRUE(increasing ? slope > 0 : slope < 0) << slope;
+  for (auto [d, px] : data_px) EXPECT_NEAR(px, p0 + slope * (d - d0), 0.01) << d;  // 6 significant digits
+}
+void check_positions(const Plot& p) {
+  std::istringstream in(render(p));
+  pt::ptree tree;
+  pt::read_xml(in, tree);
+  double w = tree.get<double>("svg.<xmlattr>.width"), h = tree.get<double>("svg.<xmlattr>.height");
+  std::vector<std::pair<double, double>> xs, ys;
+  std::function<void(const pt::ptree&)> walk = [&](const pt::ptree& n) {
+    for (const auto& [name, c] : n) {
+      if (name == "circle" && c.get("<xmlattr>.class", "") == "pt") {
+        double x = std::stod(c.get<std::string>("<xmlattr>.data-x")), y = std::stod(c.get<std::string>("<xmlattr>.data-y"));
+        double cx = c.get<double>("<xmlattr>.cx"), cy = c.get<double>("<xmlattr>.cy");
+        EXPECT_TRUE(cx > 0 && cx < w && cy > 0 && cy < h) << cx << "," << cy;
+        xs.emplace_back(p.x.log ? std::log10(x) : x, cx);
+        ys.emplace_back(p.y.log ? std::log10(y) : y, cy);
+      }
+      walk(c);
+    }
+  };
+  walk(tree);
+  std::sort(xs.begin(), xs.end());
+  std::sort(ys.begin(), ys.end());
+  expect_affine(xs, true);
+  expect_affine(ys, false);
+}
+TEST(Plot, MarkersAreDrawnWhereTheirDataSays) {
+  Plot p;
+  p.x = linear_axis("n");
+  p.y = linear_axis("ops");
+  p.series = {{"a", {{10, 3}, {20, 2.75}, {35, 100}, {80, -4}}}};
+  check_positions(p);
+  p.x = log_axis("n");
+  p.y = log_axis("time", "s");
+  p.series = {{"a", {{10, 3e-6}, {1e3, 2.75}, {2e5, 100}}}, {"b", {{50, 1e-3}}}};
+  p.bounds = {constant_bound("limit", 0.5, 10, 2e5)};
+  check_positions(p);
 }
 
 TEST(Plot, ProportionalBoundIsTheTightestThroughTheOrigin) {
