@@ -1,6 +1,8 @@
 #include "cli/formats.hpp"
 
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <set>
 #include <sstream>
@@ -21,12 +23,31 @@ RootsRequest parse_roots_request(const Args& args) {
   return r;
 }
 
+namespace {
+std::string printable(const std::string& s) {  // NUL and other control bytes shown as \xNN
+  std::string out;
+  for (unsigned char c : s) {
+    if (c < 0x20 || c == 0x7f) {
+      char b[8];
+      std::snprintf(b, sizeof b, "\\x%02x", c);
+      out += b;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+}  // namespace
+
 double parse_ws_number(const std::string& tok, const std::string& where) {
   const char* b = tok.c_str();
   char* e = nullptr;
+  errno = 0;
   double x = std::strtod(b, &e);
-  if (e == b || *e != '\0') throw InputError(where + ": '" + tok + "' is not a number");
+  // e must reach the token's end: an embedded NUL byte stops strtod early and is refused too.
+  if (e == b || e != b + tok.size()) throw InputError(where + ": '" + printable(tok) + "' is not a number");
   if (!std::isfinite(x)) throw InputError(where + ": '" + tok + "' is not finite");
+  if (errno == ERANGE && x == 0) throw InputError(where + ": '" + tok + "' underflows to 0 (nonzero below 2^-1074)");
   return x;
 }
 
