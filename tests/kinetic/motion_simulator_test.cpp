@@ -259,7 +259,7 @@ TEST(PointFile, ParsesCommentsAndBlankLinesAndRefusesBadLinesWithFileAndLine) {
 }
 
 // §5 of issue 13: kinetic sorting against exact enumeration of crossing times, at any scale. Default
-// (ctest): n = 200 points, ~10^4 events. Campaign: KMR_KINETIC_POINTS=2000 (~10^6 events), see README.
+// (ctest): n = 200 points, ~10^4 events. Campaign: KMR_KINETIC_POINTS=2020 (1 013 391 events), see README.
 // n random linear motions (x0 ∈ ±2^20, distinct v ∈ ±2^12), δ = 2^−10, horizon 2^22 (after every
 // crossing). The crossing interval of every pair, floor(−Δx/Δv·2^10), is enumerated exactly (integer
 // division, no poly code). Judged: the batch intervals are exactly the intervals holding ≥ 1 crossing
