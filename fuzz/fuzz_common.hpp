@@ -9,6 +9,10 @@
 //  * brute_sign and brute_sign_before use only exact::Integer arithmetic written here, not
 //    kmr::poly's evaluation: brute_sign expands Σ ci·m^i·2^(s(n−i)) term by term, and
 //    brute_sign_before reads the lowest nonzero Taylor coefficient of p at kδ (binomial expansion).
+//  * BruteSturm counts distinct real roots in [a, b) with its own classical Sturm sequence over exact
+//    rationals (Boost mpq, Euclidean remainders, square-free part by exact division): no code of
+//    kmr::poly's Sturm sequences, pseudo-remainders, gcd or sign filter; only Polynomial's
+//    coefficient list is read.
 //  * FUZZ_CHECK prints the case and aborts, so libFuzzer and the replay runner both report it.
 #include <cstddef>
 #include <cstdint>
@@ -16,6 +20,8 @@
 #include <cstdlib>
 #include <string>
 #include <vector>
+
+#include <boost/multiprecision/gmp.hpp>
 
 #include "poly/polynomial.hpp"
 
@@ -124,5 +130,121 @@ inline int brute_sign_before(const Polynomial& p, const Integer& k, int bits) {
   }
   return 0;  // p ≡ 0
 }
+
+// An independent root counter (see the header comment): Euclid over rationals, each member scaled by
+// a positive rational to a primitive integer polynomial (signs unchanged), the classical Sturm theorem.
+class BruteSturm {
+ public:
+  using Q = boost::multiprecision::mpq_rational;
+  using QPoly = std::vector<Q>;  // c0..cn, no trailing zeros
+
+  explicit BruteSturm(const Polynomial& p) {
+    QPoly f;
+    for (int i = 0; i <= p.degree(); ++i) f.push_back(Q(p[i].str()));
+    trim(f);
+    QPoly g = f, h = derivative(f);  // gcd(f, f') by Euclid
+    while (!h.empty()) {
+      QPoly r = normalized(rem(g, h));
+      g = h;
+      h = r;
+    }
+    std::vector<QPoly> seq{normalized(quotient(f, g))};  // square-free part, same distinct roots
+    seq.push_back(normalized(derivative(seq[0])));
+    while (!seq.back().empty()) {
+      QPoly r = rem(seq[seq.size() - 2], seq.back());
+      for (auto& c : r) c = -c;
+      seq.push_back(normalized(r));
+    }
+    seq.pop_back();
+    for (const auto& q : seq) {
+      std::vector<Integer> z;
+      for (const auto& c : q) z.push_back(Integer(boost::multiprecision::numerator(c).str()));
+      seq_.push_back(std::move(z));
+    }
+  }
+  // Distinct real roots in [m1/2^s, m2/2^s), m1 < m2.
+  int count(const Integer& m1, const Integer& m2, unsigned s) const {
+    int in_open_closed = variations(m1, s) - variations(m2, s);  // roots in (a, b]
+    return in_open_closed + (sign(seq_[0], m1, s) == 0) - (sign(seq_[0], m2, s) == 0);
+  }
+  int distinct_real_roots() const {
+    int minus = 0, plus = 0, last_m = 0, last_p = 0;
+    for (const auto& q : seq_) {
+      int sp = q.back().sign(), sm = (q.size() % 2 == 1) ? sp : -sp;
+      if (last_p != 0 && sp != last_p) ++plus;
+      if (last_m != 0 && sm != last_m) ++minus;
+      last_p = sp;
+      last_m = sm;
+    }
+    return minus - plus;
+  }
+
+ private:
+  static void trim(QPoly& p) {
+    while (!p.empty() && p.back() == 0) p.pop_back();
+  }
+  static QPoly derivative(const QPoly& p) {
+    QPoly d;
+    for (std::size_t i = 1; i < p.size(); ++i) d.push_back(p[i] * Q(static_cast<long>(i)));
+    trim(d);
+    return d;
+  }
+  // p times the positive rational that makes it a primitive integer polynomial.
+  static QPoly normalized(QPoly p) {
+    if (p.empty()) return p;
+    Integer l(1), g(0);
+    for (const auto& c : p) {
+      Integer d(boost::multiprecision::denominator(c).str());
+      l = l / boost::multiprecision::gcd(l, d) * d;
+    }
+    for (auto& c : p) {
+      c *= Q(l.str());
+      g = boost::multiprecision::gcd(g, Integer(boost::multiprecision::numerator(c).str()));
+    }
+    for (auto& c : p) c /= Q(abs(g).str());
+    return p;
+  }
+  static QPoly rem(QPoly a, const QPoly& b) {
+    while (!a.empty() && a.size() >= b.size()) {
+      Q f = a.back() / b.back();
+      std::size_t sh = a.size() - b.size();
+      for (std::size_t j = 0; j < b.size(); ++j) a[sh + j] -= f * b[j];
+      a.pop_back();
+      trim(a);
+    }
+    return a;
+  }
+  static QPoly quotient(QPoly a, const QPoly& b) {
+    QPoly q(a.size() >= b.size() ? a.size() - b.size() + 1 : 0);
+    while (!a.empty() && a.size() >= b.size()) {
+      Q f = a.back() / b.back();
+      std::size_t sh = a.size() - b.size();
+      q[sh] = f;
+      for (std::size_t j = 0; j < b.size(); ++j) a[sh + j] -= f * b[j];
+      a.pop_back();
+      trim(a);
+    }
+    FUZZ_CHECK(a.empty(), "BruteSturm: inexact division");
+    return q;
+  }
+  // Sign of q(m / 2^s), homogeneous Horner in integers.
+  static int sign(const std::vector<Integer>& q, const Integer& m, unsigned s) {
+    std::size_t n = q.size() - 1;
+    Integer acc = q[n];
+    for (std::size_t i = n; i-- > 0;) acc = acc * m + (q[i] << static_cast<unsigned>(s * (n - i)));
+    return acc.sign();
+  }
+  int variations(const Integer& m, unsigned s) const {
+    int v = 0, last = 0;
+    for (const auto& q : seq_) {
+      int sg = sign(q, m, s);
+      if (sg == 0) continue;
+      if (last != 0 && sg != last) ++v;
+      last = sg;
+    }
+    return v;
+  }
+  std::vector<std::vector<Integer>> seq_;
+};
 
 }  // namespace kmr_fuzz

@@ -3,7 +3,10 @@
 //  * a zero of p at kδ, or a sign change among the samples of [kδ, (k+1)δ], means k is reported;
 //  * the reported sign_change equals brute_sign_before((k+1)δ) ≠ brute_sign_before(kδ), computed from
 //    the Taylor expansion (fuzz_common.hpp), and an unreported k has no sign change;
-//  * reported intervals are increasing, inside the window, and hold ≥ 1 roots.
+//  * reported intervals are increasing, inside the window, and hold ≥ 1 roots;
+//  * k is reported exactly when the independent counter BruteSturm (fuzz_common.hpp: its own Sturm
+//    sequence over rationals) finds a root in [kδ, (k+1)δ), with exactly that many roots; so an
+//    interval reported with no root fails, and so does a wrong root count.
 #include <map>
 
 #include "fuzz_common.hpp"
@@ -25,6 +28,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     last = i.k;
     reported[i.k] = i;
   }
+  BruteSturm brute(c.p);
   unsigned fine = static_cast<unsigned>(c.bits + 3);  // δ/8
   for (int j = 0; j < c.width; ++j) {
     Integer k = c.k0 + j;
@@ -41,6 +45,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::string at = what + " k = " + k.str();
     if (root_seen || change) FUZZ_CHECK(it != reported.end(), at + " missing");
     if (it != reported.end()) FUZZ_CHECK(it->second.sign_change == change, at + " sign_change");
+    int roots = brute.count(k, k + 1, static_cast<unsigned>(c.bits));
+    FUZZ_CHECK((it != reported.end()) == (roots > 0), at + " reported without a root, or root not reported");
+    if (it != reported.end()) FUZZ_CHECK(it->second.roots == roots, at + " root count");
     FUZZ_CHECK(solver.sign_before_lattice(k) == brute_sign_before(c.p, k, c.bits), at + " sign_before");
   }
   return 0;

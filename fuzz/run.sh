@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs a libFuzzer campaign. Usage: fuzz/run.sh NAME SECONDS [extra libFuzzer flags]
-# NAME is one of sturm_count, lattice_isolation, next_failure, point_file, interval_nt. Builds build-fuzz/ with
+# NAME is one of the fuzz/<NAME>_fuzzer.cpp harnesses (figures of recorded runs: fuzz/campaigns.md). Builds build-fuzz/ with
 # clang-14 and -DKMR_FUZZ=ON, then fuzzes with the seed corpus fuzz/corpus/NAME (read-only) and
 # fuzz/NAME.dict if present; new inputs go to fuzz/out/NAME/, crashes to fuzz/out/NAME/crash-*.
 set -euo pipefail

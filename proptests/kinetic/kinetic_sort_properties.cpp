@@ -110,10 +110,11 @@ RC_GTEST_PROP(KineticSort, A2_1_OrderAfterEveryBatchEqualsExactSort, ()) {
   RC_CLASSIFY(sort.swaps() > sim.counters().events, "violated certificates repaired in a batch");
 }
 
-RC_GTEST_PROP(KineticSort, A2_1_EventsEqualCrossingsOnAFineLattice, ()) {
-  Scenario s = *scenarios();
-  // Pairs whose order just before 0 and just before `until` differ cross in [0, until).
-  std::vector<Integer> crossing_intervals;
+namespace {
+
+// Crossing intervals of every pair in [0, until), enumerated exactly (rationals, no poly code).
+std::vector<Integer> crossing_intervals_of(const Scenario& s) {
+  std::vector<Integer> out;
   for (std::size_t i = 0; i < s.points.size(); ++i)
     for (std::size_t j = i + 1; j < s.points.size(); ++j) {
       Integer a(s.points[j].x0 - s.points[i].x0), b(s.points[j].v - s.points[i].v);
@@ -123,19 +124,53 @@ RC_GTEST_PROP(KineticSort, A2_1_EventsEqualCrossingsOnAFineLattice, ()) {
       if (den < 0) num = -num, den = -den;
       Integer k = num / den;
       if (k * den > num) k -= 1;
-      crossing_intervals.push_back(k);
+      out.push_back(k);
     }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// Scenarios on a fine lattice whose crossings are forced to be separated (every pair crossing in
+// [0, until) does so in its own lattice interval) and at least one: wide positions, distinct
+// velocities, resampled until separated.
+rc::Gen<Scenario> separated_scenarios() {
+  return rc::gen::suchThat(
+      rc::gen::exec([] {
+        Scenario s;
+        s.bits = *rc::gen::inRange(6, 13);
+        int n = *rc::gen::inRange(2, 10);
+        std::set<long long> velocities;
+        for (int i = 0; i < n; ++i) {
+          Motion m{*rc::gen::inRange(-1000, 1001), *rc::gen::inRange(-40, 41)};
+          if (velocities.insert(m.v).second) s.points.push_back(m);
+        }
+        s.until_units = (*rc::gen::inRange(8, 64)) << s.bits;
+        return s;
+      }),
+      [](const Scenario& s) {
+        auto c = crossing_intervals_of(s);
+        return !c.empty() && std::adjacent_find(c.begin(), c.end()) == c.end();
+      });
+}
+
+}  // namespace
+
+RC_GTEST_PROP(KineticSort, A2_1_EventsEqualCrossingsOnAFineLattice, ()) {
+  // Every generated case has ≥ 1 crossing and all crossings separated, so every case asserts: one
+  // event per crossing, each in exactly the crossing's lattice interval, in time order.
+  Scenario s = *separated_scenarios();
+  std::vector<Integer> expected = crossing_intervals_of(s);
   MotionSimulator sim(s.bits, s.until());
   KineticSort sort(positions(s), sim);
-  sort.run_until(s.until());
-  long long events = sim.counters().events;
-  auto crossings = static_cast<long long>(crossing_intervals.size());
-  RC_ASSERT(events <= crossings);  // linear motions cross at most once: no pair fails twice
-  std::sort(crossing_intervals.begin(), crossing_intervals.end());
-  bool separated = std::adjacent_find(crossing_intervals.begin(), crossing_intervals.end()) == crossing_intervals.end();
-  RC_CLASSIFY(separated, "crossings in distinct lattice intervals");
-  if (separated) {
-    RC_ASSERT(events == crossings);
-    RC_ASSERT(sim.counters().max_batch <= 1);
+  std::vector<Integer> seen;
+  while (auto batch = sim.next_batch(s.until())) {
+    Integer k = (sim.now().shifted(s.bits)).floor() - 1;  // the batch's interval [kδ, (k+1)δ)
+    for (std::size_t e = 0; e < batch->size(); ++e) seen.push_back(k);
+    sort.update(*batch);
   }
+  RC_ASSERT(seen == expected);
+  RC_ASSERT(sim.counters().events == static_cast<long long>(expected.size()));
+  RC_ASSERT(sim.counters().max_batch <= 1);
+  RC_ASSERT(sort.order() == expected_order(s, s.until()));
+  RC_CLASSIFY(expected.size() >= 5, "5 or more crossings");
 }

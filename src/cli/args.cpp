@@ -19,6 +19,7 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& va
         flags_.insert(name);
       } else if (valued.count(name)) {
         if (i + 1 >= argv.size()) throw InputError("option --" + name + " needs a value");
+        if (values_.count(name)) throw InputError("option --" + name + " is given twice");
         values_[name] = argv[++i];
       } else {
         throw InputError("unknown option '" + a + "' (see --help)");

@@ -1,7 +1,8 @@
 #pragma once
 // Minimal argument parsing shared by every `kmr` command: `--name value` options, `--flag`
 // switches, positionals, and `--` after which everything is positional (so negative numbers pass).
-// Guarantees: an unknown option, a missing value or a malformed number throws InputError naming it.
+// Guarantees: an unknown option, a repeated option, a missing value or a malformed number throws
+// InputError naming it.
 #include <map>
 #include <optional>
 #include <set>

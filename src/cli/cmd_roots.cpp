@@ -3,6 +3,7 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/formats.hpp"
 #include "exact/error.hpp"
 #include "poly/sturm.hpp"
 
@@ -21,13 +22,10 @@ int roots_command(const Argv& argv) {
                  "Exit status 2 on bad input (including the zero polynomial).\n";
     return 0;
   }
-  int bits = static_cast<int>(args.integer("lattice-bits", 10, 0, 4096));
-  exact::Dyadic from = exact::Dyadic::parse(args.value("from").value_or("0"));
-  exact::Dyadic to = args.value("to") ? exact::Dyadic::parse(*args.value("to")) : exact::Dyadic::pow2(27);
-  if (!(from < to)) throw InputError("empty window: --from " + from.to_decimal() + " is not below --to " + to.to_decimal());
-  if (args.positional().empty()) throw InputError("no coefficients given (usage: kmr roots -- c0 c1 ... cn)");
-  std::vector<exact::Integer> coefficients;
-  for (const auto& c : args.positional()) coefficients.push_back(exact::parse_integer(c));
+  RootsRequest r = parse_roots_request(args);
+  const int bits = r.bits;
+  const exact::Dyadic &from = r.from, &to = r.to;
+  const std::vector<exact::Integer>& coefficients = r.coefficients;
   poly::Polynomial p(coefficients);
   if (p.is_zero()) throw InputError("the zero polynomial has no isolated roots");
   poly::LatticeRootSolver solver(p, bits);

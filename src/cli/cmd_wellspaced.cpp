@@ -13,6 +13,7 @@
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "cli/wellspaced_picture.hpp"
+#include "cli/formats.hpp"
 #include "exact/error.hpp"
 #include "wellspaced/well_spaced_set.hpp"
 
@@ -20,46 +21,6 @@ namespace kmr::cli {
 namespace {
 
 using namespace kmr::wellspaced;
-
-double parse_number(const std::string& tok, const std::string& where) {
-  const char* b = tok.c_str();
-  char* e = nullptr;
-  double x = std::strtod(b, &e);
-  if (e == b || *e != '\0') throw InputError(where + ": '" + tok + "' is not a number");
-  if (!std::isfinite(x)) throw InputError(where + ": '" + tok + "' is not finite");
-  return x;
-}
-
-template <std::size_t D>
-Point<D> parse_point(const std::vector<std::string>& toks, std::size_t from, const std::string& where) {
-  if (toks.size() - from != D)
-    throw InputError(where + ": expected " + std::to_string(D) + " coordinates, got " + std::to_string(toks.size() - from));
-  Point<D> p;
-  for (std::size_t i = 0; i < D; ++i) {
-    p[i] = parse_number(toks[from + i], where);
-    if (p[i] < 0 || p[i] > 1) throw InputError(where + ": coordinate '" + toks[from + i] + "' is outside [0,1]");
-  }
-  return p;
-}
-
-std::vector<std::pair<std::size_t, std::vector<std::string>>> read_lines(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError("cannot read file '" + path + "'");
-  std::vector<std::pair<std::size_t, std::vector<std::string>>> out;
-  std::string line;
-  std::size_t n = 0;
-  while (std::getline(in, line)) {
-    ++n;
-    auto h = line.find('#');
-    if (h != std::string::npos) line.resize(h);
-    std::istringstream ss(line);
-    std::vector<std::string> toks;
-    std::string t;
-    while (ss >> t) toks.push_back(t);
-    if (!toks.empty()) out.emplace_back(n, std::move(toks));
-  }
-  return out;
-}
 
 std::string json_num(double x) {
   char b[64];
@@ -69,31 +30,14 @@ std::string json_num(double x) {
 
 template <std::size_t D>
 int run(const Args& args, const std::string& input_path, Params params) {
-  std::vector<Point<D>> input;
-  std::set<Point<D>> seen;
-  for (auto& [n, toks] : read_lines(input_path)) {
-    std::string where = input_path + ":" + std::to_string(n);
-    Point<D> p = parse_point<D>(toks, 0, where);
-    if (!seen.insert(p).second) throw InputError(where + ": duplicate point");
-    input.push_back(p);
-  }
-  struct Update {
-    bool insert;
-    Point<D> p;
-    std::string where;
-  };
-  std::vector<Update> updates;
+  std::ifstream in(input_path);
+  if (!in) throw InputError("cannot read file '" + input_path + "'");
+  std::vector<Point<D>> input = parse_ws_points<D>(in, input_path);
+  std::vector<WsUpdate<D>> updates;
   if (auto up = args.value("updates")) {
-    std::set<Point<D>> current = seen;  // validate the whole file before applying anything
-    for (auto& [n, toks] : read_lines(*up)) {
-      std::string where = *up + ":" + std::to_string(n);
-      if (toks[0] != "+" && toks[0] != "-") throw InputError(where + ": a line must start with '+' or '-'");
-      Update u{toks[0] == "+", parse_point<D>(toks, 1, where), where};
-      if (u.insert && !current.insert(u.p).second) throw InputError(where + ": inserting a point that is already in the input");
-      if (!u.insert && !current.erase(u.p)) throw InputError(where + ": deleting a point that is not in the input");
-      if (current.size() < 2) throw InputError(where + ": fewer than 2 input points would remain");
-      updates.push_back(u);
-    }
+    std::ifstream uf(*up);
+    if (!uf) throw InputError("cannot read file '" + *up + "'");
+    updates = parse_ws_updates<D>(uf, *up, input);
   }
   if (input.size() < 2) throw InputError(input_path + ": at least 2 input points are needed");
   std::ofstream picture;  // opened before the run, so that a bad path fails fast
@@ -107,7 +51,7 @@ int run(const Args& args, const std::string& input_path, Params params) {
   Stats cstats = ws.stats();
   bool check = args.has("check");
   std::vector<std::pair<UpdateStats, double>> ustats;
-  for (const Update& u : updates) {
+  for (const WsUpdate<D>& u : updates) {
     progress.step(ustats.size(), updates.size(), "kmr wellspaced: updates");
     UpdateStats s;
     try {
@@ -204,8 +148,8 @@ int wellspaced_command(const Argv& argv) {
   long long dim = args.integer("dim", 0, 2, 4);
   if (!args.value("dim")) throw InputError("--dim D is required (2, 3 or 4)");
   Params params;
-  if (auto r = args.value("rho")) params.rho = parse_number(*r, "--rho");
-  if (auto b = args.value("beta")) params.beta = parse_number(*b, "--beta");
+  if (auto r = args.value("rho")) params.rho = parse_ws_number(*r, "--rho");
+  if (auto b = args.value("beta")) params.beta = parse_ws_number(*b, "--beta");
   else if (args.value("rho")) params.beta = std::max(params.beta, 2 * params.rho);
   if (!(params.rho > 1)) throw InputError("--rho must be > 1");
   if (!(params.beta > params.rho)) throw InputError("--beta must be > --rho");

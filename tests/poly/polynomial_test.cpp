@@ -88,6 +88,20 @@ TEST(Polynomial, DoubleFilterEqualsExactSign) {
   Integer big = Integer(1) << 100;
   Polynomial q(std::vector<Integer>{-(big + 1), big});
   EXPECT_EQ(filtered_sign_at(q, double_coefficients(q), Integer(1), 0), -1);
+  // Cancellation the double evaluation gets wrong *and nonzero*: p(t) below at t = 760902275 is
+  // exactly +1 (hand-derived with Python's integers), but double Horner gives −142288748544, and
+  // |y| is 2.27 % of the filter's error bound. So a bound too small by a factor ≥ 44 returns −1 here
+  // (the 2^100 case above rounds to y = 0 and passes with any bound ≥ 0).
+  Polynomial w(std::vector<Integer>{Integer("309750165573593959376"), Integer("578971457934741375"),
+                                    Integer(-1521804015), Integer(1)});
+  Integer wx(760902275);
+  EXPECT_EQ(w.evaluate(wx), Integer(1));
+  auto wa = double_coefficients(w);
+  ASSERT_TRUE(wa.usable);
+  double wy = wa.c[3];
+  for (int i = 2; i >= 0; --i) wy = wy * 760902275.0 + wa.c[static_cast<std::size_t>(i)];
+  EXPECT_EQ(wy, -142288748544.0);  // the filter really is challenged: the plain double sign is wrong
+  EXPECT_EQ(filtered_sign_at(w, wa, wx, 0), 1);
   // Coefficients beyond the filter's range, points with > 53 bits or s > 1000: exact fallback.
   Polynomial huge(std::vector<Integer>{Integer(1), -(Integer(1) << 1200)});
   EXPECT_FALSE(double_coefficients(huge).usable);

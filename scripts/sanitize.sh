@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# The default ctest suite under AddressSanitizer + UndefinedBehaviorSanitizer (gcc), in build-sanitize/.
+# Usage: scripts/sanitize.sh [extra ctest args]      (run by .ci/run after scripts/test.sh)
+# Every finding aborts the test that hit it (-fno-sanitize-recover=all, halt_on_error), so the run is
+# clean exactly when ctest passes. Trimmed, because the plain run (scripts/test.sh) already covers
+# them and they would only repeat it: the benchmarks (not tests), `audit.full` (the same checks as
+# `audit.quick` on larger inputs, ~4 min plain, several times that under ASan), and the clang libFuzzer
+# build with its seeded runs (KMR_FUZZ_SEEDED=OFF; those binaries are ASan+UBSan-instrumented already).
+# The corpus replays of every harness do run here, sanitized. Per-test timeouts are 4x the plain
+# run's (KMR_TEST_TIMEOUT_SCALE): ASan slows the exact-arithmetic-heavy property tests several-fold.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+dir=${KMR_SANITIZE_DIR:-build-sanitize}
+launcher=()
+if command -v ccache >/dev/null 2>&1; then
+  export CCACHE_BASEDIR="$PWD"
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+fi
+san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" \
+  -DCMAKE_CXX_FLAGS="$san" -DCMAKE_EXE_LINKER_FLAGS="$san" -DCMAKE_SHARED_LINKER_FLAGS="$san" \
+  -DKMR_BENCH=OFF -DKMR_FUZZ_SEEDED=OFF -DKMR_TEST_TIMEOUT_SCALE=4 >/dev/null
+cmake --build "$dir" -j 2
+export ASAN_OPTIONS=${ASAN_OPTIONS:-halt_on_error=1:abort_on_error=1:detect_leaks=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
+ctest --test-dir "$dir" --output-on-failure -j 2 --timeout 1800 -E '^audit\.full$' "$@"

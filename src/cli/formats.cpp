@@ -1,0 +1,125 @@
+#include "cli/formats.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <set>
+#include <sstream>
+
+#include "exact/error.hpp"
+
+namespace kmr::cli {
+
+RootsRequest parse_roots_request(const Args& args) {
+  RootsRequest r;
+  r.bits = static_cast<int>(args.integer("lattice-bits", 10, 0, 4096));
+  r.from = exact::Dyadic::parse(args.value("from").value_or("0"));
+  r.to = args.value("to") ? exact::Dyadic::parse(*args.value("to")) : exact::Dyadic::pow2(27);
+  if (!(r.from < r.to))
+    throw InputError("empty window: --from " + r.from.to_decimal() + " is not below --to " + r.to.to_decimal());
+  if (args.positional().empty()) throw InputError("no coefficients given (usage: kmr roots -- c0 c1 ... cn)");
+  for (const auto& c : args.positional()) r.coefficients.push_back(exact::parse_integer(c));
+  return r;
+}
+
+namespace {
+std::string printable(const std::string& s) {  // NUL and other control bytes shown as \xNN
+  std::string out;
+  for (unsigned char c : s) {
+    if (c < 0x20 || c == 0x7f) {
+      char b[8];
+      std::snprintf(b, sizeof b, "\\x%02x", c);
+      out += b;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+}  // namespace
+
+double parse_ws_number(const std::string& tok, const std::string& where) {
+  const char* b = tok.c_str();
+  char* e = nullptr;
+  errno = 0;
+  double x = std::strtod(b, &e);
+  // e must reach the token's end: an embedded NUL byte stops strtod early and is refused too.
+  if (e == b || e != b + tok.size()) throw InputError(where + ": '" + printable(tok) + "' is not a number");
+  if (!std::isfinite(x)) throw InputError(where + ": '" + tok + "' is not finite");
+  if (errno == ERANGE && x == 0) throw InputError(where + ": '" + tok + "' underflows to 0 (nonzero below 2^-1074)");
+  return x;
+}
+
+namespace {
+
+template <std::size_t D>
+wellspaced::Point<D> parse_point(const std::vector<std::string>& toks, std::size_t from, const std::string& where) {
+  if (toks.size() - from != D)
+    throw InputError(where + ": expected " + std::to_string(D) + " coordinates, got " + std::to_string(toks.size() - from));
+  wellspaced::Point<D> p;
+  for (std::size_t i = 0; i < D; ++i) {
+    p[i] = parse_ws_number(toks[from + i], where);
+    if (p[i] < 0 || p[i] > 1) throw InputError(where + ": coordinate '" + toks[from + i] + "' is outside [0,1]");
+  }
+  return p;
+}
+
+// Non-blank lines (after '#' comments are cut) as (line number, whitespace-separated tokens).
+std::vector<std::pair<std::size_t, std::vector<std::string>>> read_lines(std::istream& in) {
+  std::vector<std::pair<std::size_t, std::vector<std::string>>> out;
+  std::string line;
+  std::size_t n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    auto h = line.find('#');
+    if (h != std::string::npos) line.resize(h);
+    std::istringstream ss(line);
+    std::vector<std::string> toks;
+    std::string t;
+    while (ss >> t) toks.push_back(t);
+    if (!toks.empty()) out.emplace_back(n, std::move(toks));
+  }
+  return out;
+}
+
+}  // namespace
+
+template <std::size_t D>
+std::vector<wellspaced::Point<D>> parse_ws_points(std::istream& in, const std::string& name) {
+  std::vector<wellspaced::Point<D>> input;
+  std::set<wellspaced::Point<D>> seen;
+  for (auto& [n, toks] : read_lines(in)) {
+    std::string where = name + ":" + std::to_string(n);
+    wellspaced::Point<D> p = parse_point<D>(toks, 0, where);
+    if (!seen.insert(p).second) throw InputError(where + ": duplicate point");
+    input.push_back(p);
+  }
+  return input;
+}
+
+template <std::size_t D>
+std::vector<WsUpdate<D>> parse_ws_updates(std::istream& in, const std::string& name,
+                                          const std::vector<wellspaced::Point<D>>& input) {
+  std::set<wellspaced::Point<D>> current(input.begin(), input.end());  // validate the whole file first
+  std::vector<WsUpdate<D>> updates;
+  for (auto& [n, toks] : read_lines(in)) {
+    std::string where = name + ":" + std::to_string(n);
+    if (toks[0] != "+" && toks[0] != "-") throw InputError(where + ": a line must start with '+' or '-'");
+    WsUpdate<D> u{toks[0] == "+", parse_point<D>(toks, 1, where), where};
+    if (u.insert && !current.insert(u.p).second) throw InputError(where + ": inserting a point that is already in the input");
+    if (!u.insert && !current.erase(u.p)) throw InputError(where + ": deleting a point that is not in the input");
+    if (current.size() < 2) throw InputError(where + ": fewer than 2 input points would remain");
+    updates.push_back(u);
+  }
+  return updates;
+}
+
+template std::vector<wellspaced::Point<2>> parse_ws_points<2>(std::istream&, const std::string&);
+template std::vector<wellspaced::Point<3>> parse_ws_points<3>(std::istream&, const std::string&);
+template std::vector<wellspaced::Point<4>> parse_ws_points<4>(std::istream&, const std::string&);
+template std::vector<WsUpdate<2>> parse_ws_updates<2>(std::istream&, const std::string&, const std::vector<wellspaced::Point<2>>&);
+template std::vector<WsUpdate<3>> parse_ws_updates<3>(std::istream&, const std::string&, const std::vector<wellspaced::Point<3>>&);
+template std::vector<WsUpdate<4>> parse_ws_updates<4>(std::istream&, const std::string&, const std::vector<wellspaced::Point<4>>&);
+
+}  // namespace kmr::cli

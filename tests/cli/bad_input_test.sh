@@ -1,0 +1,170 @@
+#!/usr/bin/env bash
+# Bad input for every option and file format of every kmr command (spec/formats.md): each must end
+# with exit status 2 and a message naming the problem; the accepted variants (CRLF, hex floats,
+# comments, leading '+', exponents in dyadics) must give the same answer as the plain form.
+# Usage: bad_input_test.sh path/to/kmr
+set -u
+kmr=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0 failed=0
+expect_error() {  # expect_error NAME STDERR_SUBSTRING -- ARGS...
+  local name=$1 want=$2; shift 3
+  timeout 60 "$kmr" "$@" >"$tmp/out" 2>"$tmp/err"; local rc=$?
+  if [ $rc -eq 2 ] && grep -qF -- "$want" "$tmp/err" && ! grep -q 'internal error' "$tmp/err"; then passed=$((passed+1)); else
+    failed=$((failed+1)); echo "FAIL $name: rc=$rc (want 2 and '$want'), stderr:"; head -c 400 "$tmp/err"; echo; fi
+}
+expect_same() {  # expect_same NAME -- ARGS_A... :: ARGS_B...   (both exit 0 with equal stdout)
+  local name=$1; shift 2
+  local a=() b=()
+  while [ "$1" != "::" ]; do a+=("$1"); shift; done; shift; b=("$@")
+  local oa ob; oa=$(timeout 60 "$kmr" "${a[@]}" 2>&1); local ra=$?; ob=$(timeout 60 "$kmr" "${b[@]}" 2>&1); local rb=$?
+  if [ $ra -eq 0 ] && [ $rb -eq 0 ] && [ "$oa" = "$ob" ]; then passed=$((passed+1)); else
+    failed=$((failed+1)); echo "FAIL $name: rc $ra/$rb"; echo "  a: ${oa:0:300}"; echo "  b: ${ob:0:300}"; fi
+}
+f=$tmp
+: >"$f/empty"
+printf '\x89PNG\r\n\x1a\n\x00\x00\x00\rIHDR\x00\x00\x00\x10\x00\x00\x00\x10\x08\x06' >"$f/binary"
+python3 -c "print(' '.join(['0.5'] * 200000))" >"$f/longline"
+
+# --- kmr wellspaced: INPUT (D coordinates in [0,1] per line) -------------------------------------
+printf '0.25 0.25\n0.75 0.5\n' >"$f/ws"
+printf '0.25 0.25\r\n0.75 0.5\r\n' >"$f/ws_crlf"
+printf '0x1p-2 0.25  # hex float\n0.75 0x1.0p-1\n' >"$f/ws_hex"
+printf '0.25 0.25\n0.75 0.5\n\n# comment only\n' >"$f/ws_comments"
+printf '0.25\x00 0.25\n0.75 0.5\n' >"$f/ws_nul"
+printf '1e400 0.25\n0.75 0.5\n' >"$f/ws_huge"
+printf '1e-400 0.25\n0.75 0.5\n' >"$f/ws_under"
+printf 'nan 0.25\n0.75 0.5\n' >"$f/ws_nan"
+printf 'inf 0.25\n0.75 0.5\n' >"$f/ws_inf"
+printf '1.0000001 0.25\n0.75 0.5\n' >"$f/ws_out"
+printf -- '-0.1 0.25\n0.75 0.5\n' >"$f/ws_neg"
+printf '0.25 0.25 0.25\n0.75 0.5\n' >"$f/ws_arity"
+printf '0.25 0.25\n0.75 0.5\n0.25 0.25\n' >"$f/ws_dup"
+printf '0.25 0.25\n' >"$f/ws_one"
+printf '0.25 zero\n0.75 0.5\n' >"$f/ws_word"
+printf '0.25 0.25,\n0.75 0.5\n' >"$f/ws_comma"
+expect_same ws-crlf -- wellspaced --dim 2 "$f/ws" :: wellspaced --dim 2 "$f/ws_crlf"
+expect_same ws-hex -- wellspaced --dim 2 "$f/ws" :: wellspaced --dim 2 "$f/ws_hex"
+expect_same ws-comments -- wellspaced --dim 2 "$f/ws" :: wellspaced --dim 2 "$f/ws_comments"
+expect_error ws-empty "at least 2 input points" -- wellspaced --dim 2 "$f/empty"
+expect_error ws-binary "binary:1:" -- wellspaced --dim 2 "$f/binary"
+expect_error ws-longline "longline:1: expected 2 coordinates, got 200000" -- wellspaced --dim 2 "$f/longline"
+expect_error ws-nul "ws_nul:1: '0.25\\x00' is not a number" -- wellspaced --dim 2 "$f/ws_nul"
+expect_error ws-huge "ws_huge:1: '1e400' is not finite" -- wellspaced --dim 2 "$f/ws_huge"
+expect_error ws-underflow "ws_under:1: '1e-400' underflows to 0" -- wellspaced --dim 2 "$f/ws_under"
+expect_error ws-nan "ws_nan:1: 'nan' is not finite" -- wellspaced --dim 2 "$f/ws_nan"
+expect_error ws-inf "ws_inf:1: 'inf' is not finite" -- wellspaced --dim 2 "$f/ws_inf"
+expect_error ws-outside "ws_out:1: coordinate '1.0000001' is outside [0,1]" -- wellspaced --dim 2 "$f/ws_out"
+expect_error ws-negative "ws_neg:1: coordinate '-0.1' is outside [0,1]" -- wellspaced --dim 2 "$f/ws_neg"
+expect_error ws-arity "ws_arity:1: expected 2 coordinates, got 3" -- wellspaced --dim 2 "$f/ws_arity"
+expect_error ws-dup "ws_dup:3: duplicate point" -- wellspaced --dim 2 "$f/ws_dup"
+expect_error ws-one "at least 2 input points" -- wellspaced --dim 2 "$f/ws_one"
+expect_error ws-word "ws_word:1: 'zero' is not a number" -- wellspaced --dim 2 "$f/ws_word"
+expect_error ws-comma "ws_comma:1: '0.25,' is not a number" -- wellspaced --dim 2 "$f/ws_comma"
+expect_error ws-missing "cannot read file" -- wellspaced --dim 2 "$f/does-not-exist"
+expect_error ws-directory "" -- wellspaced --dim 2 "$f"
+# options
+expect_error ws-no-dim "--dim D is required" -- wellspaced "$f/ws"
+expect_error ws-dim-1 "--dim 1 is out of range [2, 4]" -- wellspaced --dim 1 "$f/ws"
+expect_error ws-dim-5 "--dim 5 is out of range [2, 4]" -- wellspaced --dim 5 "$f/ws"
+expect_error ws-dim-huge "is out of range [2, 4]" -- wellspaced --dim 99999999999999999999999 "$f/ws"
+expect_error ws-dim-word "not an integer" -- wellspaced --dim two "$f/ws"
+expect_error ws-dim-twice "option --dim is given twice" -- wellspaced --dim 2 --dim 3 "$f/ws"
+expect_error ws-rho-1 "--rho must be > 1" -- wellspaced --dim 2 --rho 1 "$f/ws"
+expect_error ws-rho-below "--rho must be > 1" -- wellspaced --dim 2 --rho 0.5 "$f/ws"
+expect_error ws-rho-nan "--rho: 'nan' is not finite" -- wellspaced --dim 2 --rho nan "$f/ws"
+expect_error ws-rho-huge "beta" -- wellspaced --dim 2 --rho 1e308 "$f/ws"
+expect_error ws-rho-word "--rho: 'x' is not a number" -- wellspaced --dim 2 --rho x "$f/ws"
+expect_error ws-beta-at-rho "--beta must be > --rho" -- wellspaced --dim 2 --rho 2 --beta 2 "$f/ws"
+expect_error ws-beta-inf "--beta: 'inf' is not finite" -- wellspaced --dim 2 --beta inf "$f/ws"
+expect_error ws-two-inputs "exactly one INPUT" -- wellspaced --dim 2 "$f/ws" "$f/ws"
+expect_error ws-no-input "exactly one INPUT" -- wellspaced --dim 2
+expect_error ws-unknown "unknown option '--frob'" -- wellspaced --dim 2 --frob "$f/ws"
+expect_error ws-value-missing "option --rho needs a value" -- wellspaced --dim 2 "$f/ws" --rho
+expect_error ws-stats-unwritable "cannot write --stats file" -- wellspaced --dim 2 --stats "$f/no/such/dir/s.json" "$f/ws"
+# --updates FILE ('+'/'-' then D coordinates)
+printf '+ 0.5 0.75\n' >"$f/up"
+printf '+ 0.5 0.75\r\n' >"$f/up_crlf"
+printf '* 0.5 0.75\n' >"$f/up_op"
+printf '+0.5 0.75\n' >"$f/up_glued"
+printf '+ 0.5\n' >"$f/up_arity"
+printf '+ 0.25 0.25\n' >"$f/up_present"
+printf -- '- 0.5 0.5\n' >"$f/up_absent"
+printf -- '- 0.25 0.25\n' >"$f/up_toofew"
+printf '+ 0.5 0.75\n+ 0.5 0.75\n' >"$f/up_twice"
+printf '+ 0.5\x00 0.75\n' >"$f/up_nul"
+expect_same up-crlf -- wellspaced --dim 2 --updates "$f/up" "$f/ws" :: wellspaced --dim 2 --updates "$f/up_crlf" "$f/ws"
+expect_same up-empty -- wellspaced --dim 2 "$f/ws" :: wellspaced --dim 2 --updates "$f/empty" "$f/ws"
+expect_error up-op "up_op:1: a line must start with '+' or '-'" -- wellspaced --dim 2 --updates "$f/up_op" "$f/ws"
+expect_error up-glued "up_glued:1: a line must start with '+' or '-'" -- wellspaced --dim 2 --updates "$f/up_glued" "$f/ws"
+expect_error up-arity "up_arity:1: expected 2 coordinates, got 1" -- wellspaced --dim 2 --updates "$f/up_arity" "$f/ws"
+expect_error up-present "up_present:1: inserting a point that is already in the input" -- wellspaced --dim 2 --updates "$f/up_present" "$f/ws"
+expect_error up-absent "up_absent:1: deleting a point that is not in the input" -- wellspaced --dim 2 --updates "$f/up_absent" "$f/ws"
+expect_error up-toofew "up_toofew:1: fewer than 2 input points would remain" -- wellspaced --dim 2 --updates "$f/up_toofew" "$f/ws"
+expect_error up-twice "up_twice:2: inserting a point that is already in the input" -- wellspaced --dim 2 --updates "$f/up_twice" "$f/ws"
+expect_error up-nul "up_nul:1: '0.5\\x00' is not a number" -- wellspaced --dim 2 --updates "$f/up_nul" "$f/ws"
+expect_error up-binary "binary:1:" -- wellspaced --dim 2 --updates "$f/binary" "$f/ws"
+expect_error up-missing "cannot read file" -- wellspaced --dim 2 --updates "$f/does-not-exist" "$f/ws"
+
+# --- kmr simulate sort FILE ('x0 v' decimal integers per line) -----------------------------------
+printf '0 1\n10 -1\n' >"$f/s"
+printf '0 1\r\n10 -1\r\n' >"$f/s_crlf"
+printf '+0 +1  # comment\n\n10 -1\n' >"$f/s_plus"
+printf '0 1\n0 1\n' >"$f/s_dup"
+printf '0 1\x00\n10 -1\n' >"$f/s_nul"
+printf '0x10 1\n' >"$f/s_hex"
+printf '1e3 1\n' >"$f/s_exp"
+printf '0.5 1\n' >"$f/s_frac"
+printf '0\n' >"$f/s_arity"
+python3 -c "print('9' * 20000, 1); print(0, 1)" >"$f/s_hugenum"
+expect_same sort-crlf -- simulate sort "$f/s" --until 8 :: simulate sort "$f/s_crlf" --until 8
+expect_same sort-plus-comments -- simulate sort "$f/s" --until 8 :: simulate sort "$f/s_plus" --until 8
+expect_error sort-empty "empty: no points" -- simulate sort "$f/empty"
+expect_error sort-binary "binary:1:" -- simulate sort "$f/binary"
+expect_error sort-longline "longline:1: expected 2 integers" -- simulate sort "$f/longline"
+expect_error sort-dup "identical trajectories" -- simulate sort "$f/s_dup"
+expect_error sort-nul "s_nul:1: not an integer" -- simulate sort "$f/s_nul"
+expect_error sort-hex "s_hex:1: not an integer: '0x10'" -- simulate sort "$f/s_hex"
+expect_error sort-exp "s_exp:1: not an integer: '1e3'" -- simulate sort "$f/s_exp"
+expect_error sort-frac "s_frac:1: not an integer: '0.5'" -- simulate sort "$f/s_frac"
+expect_error sort-arity "s_arity:1: expected 2 integers" -- simulate sort "$f/s_arity"
+expect_error sort-missing "cannot open" -- simulate sort "$f/does-not-exist"
+expect_error sort-until-neg "--until must be >= 0" -- simulate sort "$f/s" --until -1
+expect_error sort-until-nondyadic "not a dyadic number: '0.3'" -- simulate sort "$f/s" --until 0.3
+expect_error sort-until-offlattice "is not a multiple of the lattice step" -- simulate sort "$f/s" --until 0.5 --lattice-bits 0
+expect_error sort-until-hex "not a dyadic number: '0x1'" -- simulate sort "$f/s" --until 0x1
+expect_error sort-bits-63 "--lattice-bits 63 is out of range [0, 62]" -- simulate sort "$f/s" --lattice-bits 63
+expect_error sort-bits-neg "--lattice-bits -1 is out of range [0, 62]" -- simulate sort "$f/s" --lattice-bits -1
+expect_error sort-until-twice "option --until is given twice" -- simulate sort "$f/s" --until 1 --until 2
+expect_error sort-structure "unknown structure 'hull'" -- simulate hull "$f/s"
+expect_error sort-two-files "exactly one FILE" -- simulate sort "$f/s" "$f/s"
+expect_same sort-hugenum -- simulate sort "$f/s_hugenum" --until 1 :: simulate sort "$f/s_hugenum" --until 1
+
+# --- kmr roots [--lattice-bits B] [--from T0] [--to T1] -- c0 ... cn -----------------------------
+expect_same roots-plus -- roots -- -2 0 1 :: roots -- -2 +0 +1
+expect_same roots-exponent-dyadic -- roots --from 1000 -- -2 0 1 :: roots --from 1e3 -- -2 0 1
+expect_error roots-hex-coef "not an integer: '0x10'" -- roots -- 0x10 1
+expect_error roots-exp-coef "not an integer: '1e3'" -- roots -- 1e3 1
+expect_error roots-empty-coef "not an integer: ''" -- roots -- 1 ""
+expect_error roots-nul-coef "not an integer" -- roots -- "$(printf '1\x01')" 1
+expect_error roots-bits-neg "--lattice-bits -1 is out of range [0, 4096]" -- roots --lattice-bits -1 -- 1 1
+expect_error roots-bits-big "--lattice-bits 4097 is out of range [0, 4096]" -- roots --lattice-bits 4097 -- 1 1
+expect_error roots-from-hex "not a dyadic number: '0x10'" -- roots --from 0x10 -- 1 1
+expect_error roots-from-twice "option --from is given twice" -- roots --from 0.5 --from 0.25 -- 1 1
+expect_error roots-from-missing "option --from needs a value" -- roots --from
+expect_error roots-empty-window "empty window" -- roots --from 2 --to 2 -- 1 1
+expect_error roots-zero "zero polynomial" -- roots -- 0 0 0
+expect_error roots-no-coefs "no coefficients" -- roots --
+
+# --- kmr audit, kmr bench, kmr -------------------------------------------------------------------
+expect_error audit-only-nothing "--only 'ZZZ' matches no claim ID" -- audit --only ZZZ
+expect_error audit-json-unwritable "cannot write --json file" -- audit --quick --only A2.1-lattice --json "$f/no/such/dir/a.json"
+expect_error audit-seed-neg "--seed -1 is out of range" -- audit --seed -1 --only A2.1
+expect_error audit-positional "takes no positional argument" -- audit extra
+expect_error bench-program "unknown --program" -- bench sac --program nope
+expect_error bench-n-neg "--n -5 is out of range" -- bench sac --n -5
+expect_error unknown-command "unknown command 'frob'" -- frob
+
+echo "bad input: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
