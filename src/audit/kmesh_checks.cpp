@@ -110,12 +110,21 @@ Verdict l4211(const Options& o) {
   Verdict v;
   std::vector<std::size_t> sizes = o.quick ? std::vector<std::size_t>{4, 8} : std::vector<std::size_t>{6, 12, 24};
   double hi = 0, lo = INFINITY;
+  svg::Series by_n{"max over ranks of |S_l| / n", {}};
   for (auto n : sizes) {
     Run r = run(uniform(n, o.seed + 7 * n, 1000));
+    by_n.points.push_back({double(n), r.centers_ratio});
     hi = std::max(hi, r.centers_ratio), lo = std::min(lo, r.centers_ratio);
     v.figure("n=" + std::to_string(n) + " max_l |S_l|/n", fmt(r.centers_ratio));
   }
   v.pass = hi / lo < 4;
+  svg::Plot p;
+  p.title = "L4.2.11: l-centres per rank / n against n";
+  p.x = svg::linear_axis("n", "input points");
+  p.y = svg::linear_axis("max over ranks |S_l| / n");
+  p.series = {by_n};
+  p.bounds.push_back(svg::constant_bound("pass bound: 4 x smallest ratio", 4 * lo, double(sizes.front()), double(sizes.back())));
+  v.plot(std::move(p));
   v.summary = "ℓ-centers (stored ranks λ_v ≤ ℓ ≤ Λ_v) per rank ÷ n, max over ranks, bounded over n (claim: O(n) per rank)";
   return v;
 }
@@ -147,6 +156,19 @@ Verdict l442(const Options& o) {
   double hmin = *std::min_element(at_half.begin(), at_half.end()), hmax = *std::max_element(at_half.begin(), at_half.end());
   double slope = (at_int.back() - at_int.front()) / (js.back() - js.front());
   v.figure("integer-time Steiner/n per unit of log2(1/ε) (L4.4.2: Ω(log Δ))", fmt(slope));
+  {
+    svg::Plot p;
+    p.title = "L4.4.2-L4.4.3: Steiner vertices / n on Fig. 4.6 against log2(1/eps)";
+    p.x = svg::linear_axis("log2(1/eps)", "bits");
+    p.y = svg::linear_axis("Steiner vertices / n");
+    svg::Series si{"integer time (pairs eps apart)", {}}, sh{"half-integer time", {}};
+    for (std::size_t i = 0; i < js.size(); ++i) {
+      si.points.push_back({double(js[i]), at_int[i]});
+      sh.points.push_back({double(js[i]), at_half[i]});
+    }
+    p.series = {si, sh};
+    v.plot(std::move(p));
+  }
   v.figure("half-integer Steiner/n max/min (L4.4.3: O(1))", fmt(hmax / hmin));
   v.figure("changes per unit time ≥ 2(|M_int| − |M_half|), ÷ (n log2(1/ε)) at the smallest ε (L4.4.4)",
            fmt(2 * (at_int.back() - at_half.back()) / js.back()));
