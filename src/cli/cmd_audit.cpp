@@ -32,11 +32,6 @@ int audit_command(const Argv& argv) {
   audit::Options options;
   options.quick = args.has("quick");
   options.only = args.value("only").value_or("");
-  if (!options.only.empty()) {  // a prefix that selects nothing is a typo, not a passing audit
-    bool any = false;
-    for (const auto& c : audit::all_checks()) any = any || c.claim.rfind(options.only, 0) == 0;
-    if (!any) throw InputError("--only '" + options.only + "' matches no claim ID (see spec/claims.md)");
-  }
   options.seed = static_cast<std::uint64_t>(args.integer("seed", 20121, 0, 1LL << 62));
   audit::select_checks(options);  // an --only without a match fails before any file is written
   std::vector<audit::Result> included;  // read before --json truncates a file (it may be the same one)

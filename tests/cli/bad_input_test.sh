@@ -158,7 +158,7 @@ expect_error roots-zero "zero polynomial" -- roots -- 0 0 0
 expect_error roots-no-coefs "no coefficients" -- roots --
 
 # --- kmr audit, kmr bench, kmr -------------------------------------------------------------------
-expect_error audit-only-nothing "--only 'ZZZ' matches no claim ID" -- audit --only ZZZ
+expect_error audit-only-nothing "no claim matches --only 'ZZZ'" -- audit --only ZZZ
 expect_error audit-json-unwritable "cannot write --json file" -- audit --quick --only A2.1-lattice --json "$f/no/such/dir/a.json"
 expect_error audit-seed-neg "--seed -1 is out of range" -- audit --seed -1 --only A2.1
 expect_error audit-positional "takes no positional argument" -- audit extra
