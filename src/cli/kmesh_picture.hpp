@@ -6,8 +6,8 @@
 // since the outer Steiner orbits reach far beyond the input. Only the left panel carries data.
 // Guarantees (tests/cli/kmesh_picture_test.sh): a well-formed SVG with one <polygon
 // class="triangle"> per triangle (data-vertices: its three vertex indices, as printed) and one
-// <circle> per vertex (class "input" or "steiner" in the left panel, "zoom-…" in the right one; data-index its position in the output,
-// data-x/data-y its printed coordinates, exactly).
+// <circle> per vertex in the left panel (class "input" or "steiner", data-index its position in the
+// output, data-x/data-y its printed coordinates, exactly); the right panel's classes are "zoom-…".
 #include <array>
 #include <string>
 #include <vector>
