@@ -69,10 +69,10 @@ std::string hull_picture(const std::vector<hull::Point3d>& points, const hull::H
     }
   }
   svg::Style grey;
-  grey.fill = "#a0a0a0";
+  grey.fill = "#7f7f7f";
   for (std::size_t i = 0; i < points.size(); ++i)
     if (!is_vertex[i])
-      d.circle(X(int(i)), Y(int(i)), 1.6, grey,
+      d.circle(X(int(i)), Y(int(i)), 1.8, grey,
                {{"class", "point"}, {"data-index", std::to_string(i)}, {"data-x", svg::exact_number(points[i][0])},
                 {"data-y", svg::exact_number(points[i][1])}, {"data-z", svg::exact_number(points[i][2])}});
   for (const auto& [f, c] : front) {
