@@ -6,6 +6,7 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/hull_picture.hpp"
 #include "exact/error.hpp"
 #include "hull/hull.hpp"
 #include "hull/xyz_file.hpp"
@@ -13,9 +14,9 @@
 namespace kmr::cli {
 
 int hull_command(const Argv& argv) {
-  Args args(argv, {"stats"}, {"float"});
+  Args args(argv, {"stats", "svg"}, {"float"});
   if (args.help() || args.positional().size() != 1) {
-    std::cout << "usage: kmr hull FILE [--float] [--stats FILE]\n"
+    std::cout << "usage: kmr hull FILE [--float] [--stats FILE] [--svg FILE]\n"
                  "FILE has one point per line, 'x y z' (decimal numbers, read as the nearest doubles; '#' comments).\n"
                  "Computes the 3D convex hull with the randomized incremental algorithm of thesis §2.2, with\n"
                  "exact predicates (a filtered orient3d with exact fallback); --float uses plain doubles\n"
@@ -23,13 +24,20 @@ int hull_command(const Argv& argv) {
                  "Prints JSON {\"n\", \"vertices\", \"facets\"}: vertices are the 0-based indices of the extreme\n"
                  "points (the lowest index among equal points), increasing; facets are triangles\n"
                  "counter-clockwise seen from outside, smallest index first, sorted. --stats FILE writes\n"
-                 "counters (insertions, history steps, orientation tests, exact fallbacks, seconds) as JSON.\n";
+                 "counters (insertions, history steps, orientation tests, exact fallbacks, seconds) as JSON.\n"
+                 "--svg FILE draws the hull (orthographic, a fixed view): front faces filled, back-face edges dashed,\n"
+                 "hull vertices marked, other input points small grey dots.\n";
     return args.help() ? 0 : 2;
   }
   const std::string& name = args.positional()[0];
   std::ifstream file(name);
   if (!file) throw InputError("cannot open '" + name + "'");
   auto points = hull::read_xyz(file, name);
+  std::ofstream picture;  // opened before the run, so that a bad path fails fast
+  if (auto f = args.value("svg")) {
+    picture.open(*f);
+    if (!picture) throw InputError("cannot write --svg file '" + *f + "'");
+  }
   auto start = std::chrono::steady_clock::now();
   hull::Hull h;
   try {
@@ -39,6 +47,12 @@ int hull_command(const Argv& argv) {
     throw std::runtime_error(std::string("the --float baseline failed (it is not robust; run without --float): ") + e.what());
   }
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (picture.is_open()) {
+    picture << hull_picture(points, h, "kmr hull " + name.substr(name.find_last_of('/') + 1) + ": " +
+                                           std::to_string(points.size()) + " points, orthographic view");
+    if (!picture) throw InputError("cannot write --svg file '" + *args.value("svg") + "'");
+    picture.close();
+  }
   std::cout << "{\"n\": " << h.n << ", \"vertices\": [";
   for (std::size_t i = 0; i < h.vertices.size(); ++i) std::cout << (i ? ", " : "") << h.vertices[i];
   std::cout << "], \"facets\": [";

@@ -13,6 +13,7 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/kmesh_picture.hpp"
 #include "exact/error.hpp"
 #include "exact/integer.hpp"
 #include "kmesh/certificates.hpp"
@@ -72,9 +73,9 @@ std::string num(double x) {
 }  // namespace
 
 int kmesh_command(const Argv& argv) {
-  Args args(argv, {"until", "lattice-bits", "updates", "stats"}, {"check"});
+  Args args(argv, {"until", "lattice-bits", "updates", "stats", "svg"}, {"check"});
   if (args.help()) {
-    std::cout << "usage: kmr kmesh FILE [--until T] [--lattice-bits B] [--updates FILE] [--check] [--stats FILE]\n"
+    std::cout << "usage: kmr kmesh FILE [--until T] [--lattice-bits B] [--updates FILE] [--check] [--stats FILE] [--svg FILE]\n"
                  "The Chapter 4 mesh of the points in FILE: satellites (24 rays, orbits 2^l) converted rank by rank\n"
                  "over a deformable spanner (Fig. 4.2), and the Delaunay triangulation of the output.\n"
                  "  FILE          one point per line, 'x y vx vy' or 'x y' (decimal integers of any size): the\n"
@@ -87,6 +88,7 @@ int kmesh_command(const Argv& argv) {
                  "  --check       after the construction, every batch and every update: brute-force checks of L4.2.4,\n"
                  "                L4.2.5, L4.2.6, L4.2.9, L4.2.10, the spanner, Delaunay and 9/2-well-spacedness; exit 1 on a violation\n"
                  "  --stats F     per-rank counts, operation counts and measured constants as JSON\n"
+                 "  --svg F       draw the mesh at time T: Delaunay triangles, input vertices filled, Steiner vertices open\n"
                  "stdout: JSON {\"time\", \"vertices\": [[x, y, kind]...] (kind 1 = Steiner), \"triangles\" (ccw),\n"
                  "\"events\", \"batches\" (certificate failures and their lattice intervals up to T), \"certificates\" (of §4.3\n"
                  "certificates of this mesh), \"first_failure\" (the first lattice interval, within 2^20, where one of\n"
@@ -186,6 +188,11 @@ int kmesh_command(const Argv& argv) {
                          std::get<0>(*c).to_decimal() + " (the spread would be infinite)");
     }
 
+  std::ofstream picture;  // opened before the run, so that a bad path fails fast
+  if (auto f = args.value("svg")) {
+    picture.open(*f);
+    if (!picture) throw InputError("cannot write --svg file '" + *f + "'");
+  }
   std::vector<InputPoint> in;
   for (auto& p : traj) in.push_back({p.x, p.y, p.vx, p.vy});
   auto t0 = std::chrono::steady_clock::now();
@@ -213,13 +220,15 @@ int kmesh_command(const Argv& argv) {
   Mesh m = sim.mesh_now();
   double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  std::ostringstream out;
-  out << "{\"time\": " << until.to_decimal() << ", \"vertices\": [";
+  std::vector<KmeshVertex> vertices;  // in input units: printed and drawn
   for (std::size_t i = 0; i < m.size(); ++i) {
     const Point2& p = m.spanner.position(static_cast<int>(i));
-    out << (i ? ", " : "") << "[" << num(p[0].to_double() / double(kScale)) << ", "
-        << num(p[1].to_double() / double(kScale)) << ", " << (m.info[i].steiner ? 1 : 0) << "]";
+    vertices.push_back({p[0].to_double() / double(kScale), p[1].to_double() / double(kScale), m.info[i].steiner});
   }
+  std::ostringstream out;
+  out << "{\"time\": " << until.to_decimal() << ", \"vertices\": [";
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    out << (i ? ", " : "") << "[" << num(vertices[i].x) << ", " << num(vertices[i].y) << ", " << (vertices[i].steiner ? 1 : 0) << "]";
   out << "], \"triangles\": [";
   for (std::size_t i = 0; i < m.triangles.size(); ++i) {
     auto& t = m.triangles[i];
@@ -274,6 +283,12 @@ int kmesh_command(const Argv& argv) {
          << ", \"vertices\": " << b.vertices << ", \"steiner_before\": " << b.steiner_before << ", \"steiner_kept\": " << b.steiner_kept << "}";
     }
     st << "]}\n";
+  }
+  if (picture.is_open()) {
+    picture << kmesh_picture(vertices, m.triangles,
+                             "kmr kmesh " + path.substr(path.find_last_of('/') + 1) + " at time " + until.to_decimal());
+    if (!picture) throw InputError("cannot write --svg file '" + *args.value("svg") + "'");
+    picture.close();
   }
   std::cout << out.str();
   return status;
