@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -118,13 +119,16 @@ std::vector<Result> run_checks(const Options& options) {
 
 void print_table(const std::vector<Result>& results, std::ostream& out) {
   int failed = 0;
-  out << std::left << std::setw(28) << "claim" << std::setw(6) << "verdict" << "  check\n";
+  std::size_t w = 28;  // the claim column fits the longest ID
+  for (const Result& r : results) w = std::max(w, r.claim.size() + 2);
+  const std::string indent(w + 8, ' ');
+  out << std::left << std::setw(int(w)) << "claim" << std::setw(6) << "verdict" << "  check\n";
   for (const Result& r : results) {
     const Verdict& v = r.verdict;
     if (!v.pass) ++failed;
-    out << std::left << std::setw(28) << r.claim << std::setw(6) << (v.pass ? "PASS" : "FAIL") << "  " << r.title << "\n";
-    if (!v.summary.empty()) out << std::string(36, ' ') << v.summary << "\n";
-    for (auto& [name, value] : v.figures) out << std::string(36, ' ') << name << " = " << value << "\n";
+    out << std::left << std::setw(int(w)) << r.claim << std::setw(6) << (v.pass ? "PASS" : "FAIL") << "  " << r.title << "\n";
+    if (!v.summary.empty()) out << indent << v.summary << "\n";
+    for (auto& [name, value] : v.figures) out << indent << name << " = " << value << "\n";
   }
   out << results.size() - failed << " passed, " << failed << " failed\n";
 }
