@@ -22,6 +22,7 @@ for l in ${layers//;/ }; do
   for h in "$src/$l"/*.hpp; do test -f "$tmp/prefix/include/kmr/$l/$(basename "$h")" || { echo "not installed: $l/$(basename "$h")"; exit 1; }; done
 done
 cmake -S "$consumer" -B "$tmp/build" "${gen[@]}" -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_BUILD_TYPE=Release \
+  "-DCMAKE_CXX_FLAGS=${KMR_CONSUMER_CXX_FLAGS:-}" "-DCMAKE_EXE_LINKER_FLAGS=${KMR_CONSUMER_LINKER_FLAGS:-}" \
   "-DKMR_LAYERS=$layers" >"$tmp/configure.log" ||
   { cat "$tmp/configure.log"; exit 1; }
 cmake --build "$tmp/build" >"$tmp/build.log" || { cat "$tmp/build.log"; exit 1; }
