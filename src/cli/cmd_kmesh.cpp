@@ -13,6 +13,7 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/formats.hpp"
 #include "cli/kmesh_picture.hpp"
 #include "exact/error.hpp"
 #include "exact/integer.hpp"
@@ -31,31 +32,24 @@ struct Trajectory {
   std::size_t line;
 };
 
+// A decimal integer of a kmesh file, or an error naming its place.
+exact::Integer integer_at(const std::string& s, const std::string& where) {
+  try {
+    return exact::parse_integer(s);
+  } catch (const InputError&) {
+    throw InputError(where + ": '" + s + "' is not a decimal integer");
+  }
+}
+
 std::vector<Trajectory> read_points(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError("cannot read file '" + path + "'");
   std::vector<Trajectory> out;
-  std::string line;
-  std::size_t n = 0;
-  while (std::getline(in, line)) {
-    ++n;
-    auto h = line.find('#');
-    if (h != std::string::npos) line.resize(h);
-    std::istringstream ss(line);
-    std::vector<std::string> t;
-    std::string w;
-    while (ss >> w) t.push_back(w);
-    if (t.empty()) continue;
+  for (auto& [n, t] : read_lines(in)) {
     std::string where = path + ":" + std::to_string(n);
     if (t.size() != 2 && t.size() != 4)
       throw InputError(where + ": expected 'x y' or 'x y vx vy', got " + std::to_string(t.size()) + " values");
-    auto num = [&](const std::string& s) {
-      try {
-        return exact::parse_integer(s);
-      } catch (const InputError&) {
-        throw InputError(where + ": '" + s + "' is not a decimal integer");
-      }
-    };
+    auto num = [&](const std::string& x) { return integer_at(x, where); };
     Trajectory p{num(t[0]), num(t[1]), t.size() == 4 ? num(t[2]) : exact::Integer(0),
                  t.size() == 4 ? num(t[3]) : exact::Integer(0), n};
     out.push_back(p);
@@ -123,27 +117,11 @@ int kmesh_command(const Argv& argv) {
   if (auto uf = args.value("updates")) {
     std::ifstream in(*uf);
     if (!in) throw InputError("cannot read file '" + *uf + "'");
-    std::string line;
-    std::size_t n = 0;
-    while (std::getline(in, line)) {
-      ++n;
-      auto h = line.find('#');
-      if (h != std::string::npos) line.resize(h);
-      std::istringstream ss(line);
-      std::vector<std::string> t;
-      std::string w;
-      while (ss >> w) t.push_back(w);
-      if (t.empty()) continue;
+    for (auto& [n, t] : read_lines(in)) {
       std::string where = *uf + ":" + std::to_string(n);
       if (t.size() != 6 || (t[1] != "+" && t[1] != "-"))
         throw InputError(where + ": expected 'T + x y vx vy' or 'T - x y vx vy'");
-      auto num = [&](const std::string& x) {
-        try {
-          return exact::parse_integer(x);
-        } catch (const InputError&) {
-          throw InputError(where + ": '" + x + "' is not a decimal integer");
-        }
-      };
+      auto num = [&](const std::string& x) { return integer_at(x, where); };
       updates.push_back({lattice_time(t[0], where), t[1] == "+", {num(t[2]), num(t[3]), num(t[4]), num(t[5])}, where});
     }
     std::stable_sort(updates.begin(), updates.end(), [](auto& a, auto& b) { return a.t < b.t; });

@@ -65,23 +65,6 @@ wellspaced::Point<D> parse_point(const std::vector<std::string>& toks, std::size
   return p;
 }
 
-// Non-blank lines (after '#' comments are cut) as (line number, whitespace-separated tokens).
-std::vector<std::pair<std::size_t, std::vector<std::string>>> read_lines(std::istream& in) {
-  std::vector<std::pair<std::size_t, std::vector<std::string>>> out;
-  std::string line;
-  std::size_t n = 0;
-  while (std::getline(in, line)) {
-    ++n;
-    auto h = line.find('#');
-    if (h != std::string::npos) line.resize(h);
-    std::istringstream ss(line);
-    std::vector<std::string> toks;
-    std::string t;
-    while (ss >> t) toks.push_back(t);
-    if (!toks.empty()) out.emplace_back(n, std::move(toks));
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -121,5 +104,23 @@ template std::vector<wellspaced::Point<4>> parse_ws_points<4>(std::istream&, con
 template std::vector<WsUpdate<2>> parse_ws_updates<2>(std::istream&, const std::string&, const std::vector<wellspaced::Point<2>>&);
 template std::vector<WsUpdate<3>> parse_ws_updates<3>(std::istream&, const std::string&, const std::vector<wellspaced::Point<3>>&);
 template std::vector<WsUpdate<4>> parse_ws_updates<4>(std::istream&, const std::string&, const std::vector<wellspaced::Point<4>>&);
+
+// Non-blank lines (after '#' comments are cut) as (line number, whitespace-separated tokens).
+std::vector<std::pair<std::size_t, std::vector<std::string>>> read_lines(std::istream& in) {
+  std::vector<std::pair<std::size_t, std::vector<std::string>>> out;
+  std::string line;
+  std::size_t n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    auto h = line.find('#');
+    if (h != std::string::npos) line.resize(h);
+    std::istringstream ss(line);
+    std::vector<std::string> toks;
+    std::string t;
+    while (ss >> t) toks.push_back(t);
+    if (!toks.empty()) out.emplace_back(n, std::move(toks));
+  }
+  return out;
+}
 
 }  // namespace kmr::cli

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <istream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/args.hpp"
@@ -14,6 +15,10 @@
 #include "wellspaced/well_spaced_set.hpp"
 
 namespace kmr::cli {
+
+// The one tokenizer of the line formats: the non-blank lines of `in` (after '#' comments are cut)
+// as (line number, whitespace-separated tokens).
+std::vector<std::pair<std::size_t, std::vector<std::string>>> read_lines(std::istream& in);
 
 // `kmr roots [--lattice-bits B] [--from T0] [--to T1] -- c0 ... cn`, all but the zero-polynomial check.
 struct RootsRequest {
