@@ -11,6 +11,9 @@ cmake --install "$build" --prefix "$tmp/prefix" >"$tmp/install.log"
 test -x "$tmp/prefix/bin/kmr"
 test -f "$tmp/prefix/include/kmr/wellspaced/well_spaced_set.hpp"
 "$tmp/prefix/bin/kmr" --version | grep -q '^kmr '
+# the exported targets find GMP on the consumer's machine, not at this build's absolute path
+targets=$(find "$tmp/prefix" -name kmrTargets.cmake)
+if grep -n 'libgmp' "$targets"; then echo "kmrTargets.cmake names this machine's GMP library"; exit 1; fi
 gen=()
 command -v ninja >/dev/null && gen=(-G Ninja)
 # every layer folder of src/ (cli is the executable) is exported as kmr::<folder> with its headers,
