@@ -6,6 +6,7 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/output_file.hpp"
 #include "cli/hull_picture.hpp"
 #include "exact/error.hpp"
 #include "hull/hull.hpp"
@@ -33,11 +34,8 @@ int hull_command(const Argv& argv) {
   std::ifstream file(name);
   if (!file) throw InputError("cannot open '" + name + "'");
   auto points = hull::read_xyz(file, name);
-  std::ofstream picture;  // opened before the run, so that a bad path fails fast
-  if (auto f = args.value("svg")) {
-    picture.open(*f);
-    if (!picture) throw InputError("cannot write --svg file '" + *f + "'");
-  }
+  OutputFile picture;  // opened before the run (a bad path fails fast), removed if the run fails
+  if (auto f = args.value("svg")) picture.open(*f, "--svg");
   auto start = std::chrono::steady_clock::now();
   hull::Hull h;
   try {
@@ -48,10 +46,9 @@ int hull_command(const Argv& argv) {
   }
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (picture.is_open()) {
-    picture << hull_picture(points, h, "kmr hull " + name.substr(name.find_last_of('/') + 1) + ": " +
-                                           std::to_string(points.size()) + " points, orthographic view");
-    if (!picture) throw InputError("cannot write --svg file '" + *args.value("svg") + "'");
-    picture.close();
+    picture.stream() << hull_picture(points, h, "kmr hull " + name.substr(name.find_last_of('/') + 1) + ": " +
+                                                    std::to_string(points.size()) + " points, orthographic view");
+    picture.commit();
   }
   std::cout << "{\"n\": " << h.n << ", \"vertices\": [";
   for (std::size_t i = 0; i < h.vertices.size(); ++i) std::cout << (i ? ", " : "") << h.vertices[i];

@@ -11,6 +11,7 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/output_file.hpp"
 #include "cli/progress.hpp"
 #include "cli/wellspaced_picture.hpp"
 #include "cli/formats.hpp"
@@ -40,11 +41,8 @@ int run(const Args& args, const std::string& input_path, Params params) {
     updates = parse_ws_updates<D>(uf, *up, input);
   }
   if (input.size() < 2) throw InputError(input_path + ": at least 2 input points are needed");
-  std::ofstream picture;  // opened before the run, so that a bad path fails fast
-  if (auto f = args.value("svg")) {
-    picture.open(*f);
-    if (!picture) throw InputError("cannot write --svg file '" + *f + "'");
-  }
+  OutputFile picture;  // opened before the run (a bad path fails fast), removed if the run fails
+  if (auto f = args.value("svg")) picture.open(*f, "--svg");
   Progress progress(args.has("quiet"));
   progress.message("kmr wellspaced: StableWS on " + std::to_string(input.size()) + " points");
   WellSpacedSet<D> ws(input, params);
@@ -86,9 +84,8 @@ int run(const Args& args, const std::string& input_path, Params params) {
       char caption[160];
       std::snprintf(caption, sizeof caption, "kmr wellspaced %s: rho = %g, beta = %g; Voronoi cells clipped to [0,1]^2",
                     input_path.substr(input_path.find_last_of('/') + 1).c_str(), params.rho, params.beta);
-      picture << wellspaced_picture(ws, caption);
-      if (!picture) throw InputError("cannot write --svg file '" + *args.value("svg") + "'");
-      picture.close();
+      picture.stream() << wellspaced_picture(ws, caption);
+      picture.commit();
     }
   }
   progress.done();

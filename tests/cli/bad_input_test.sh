@@ -166,5 +166,10 @@ expect_error bench-program "unknown --program" -- bench sac --program nope
 expect_error bench-n-neg "--n -5 is out of range" -- bench sac --n -5
 expect_error unknown-command "unknown command 'frob'" -- frob
 
+# --- a run that fails after its --svg file was opened leaves no file behind ----------------------
+printf '0 0 0\n1 0 0\n0 1 0\n1 1 0\n' >"$f/flat.xyz"
+expect_error hull-svg-failed-run "all points are coplanar" -- hull "$f/flat.xyz" --svg "$f/flat.svg"
+if [ -e "$f/flat.svg" ]; then failed=$((failed+1)); echo "FAIL hull-svg-failed-run: left $f/flat.svg behind"; else passed=$((passed+1)); fi
+
 echo "bad input: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
