@@ -172,7 +172,7 @@ enum class Kind : std::uint8_t { ReadStart, End, MemoStart, Alloc, Write, IWrite
 struct Node : Stamp {
   Kind kind;
   // KeyedNode: in the runtime's hash table (else on its anchor's list); WriteNode: superseded by an
-  // earlier write (§1 item 4).
+  // earlier write (§1 item 4); ReadNode: a read of an IMod (an IReadNode).
   bool flag = false;
   std::uint16_t bytes = 0;    // allocation size (make_node checks that it fits)
   explicit Node(Kind k) : kind(k) {}
@@ -186,7 +186,6 @@ struct IVersion;
 
 struct ReadNode : Node {
   ModBase* mod = nullptr;
-  ReadNode** rhead = nullptr;  // head of the reader list it is on (a Mod's, or an IMod version's)
   ReadNode* rprev = nullptr;
   ReadNode* rnext = nullptr;
   Node* end = nullptr;
@@ -196,7 +195,7 @@ struct ReadNode : Node {
   virtual void rerun() = 0;
 };
 
-struct IReadNode : ReadNode {  // a read of an IMod: on the reader list of the version it sees
+struct IReadNode : ReadNode {  // a read of an IMod (flag set): on the reader list of the version it sees
   IVersion* ver = nullptr;
 };
 
@@ -256,26 +255,49 @@ struct HookNode : Node {
   virtual void undo() = 0;
 };
 
+// The static descriptor of a modifiable's type (its size, value digest and destructor), found by
+// a 16-bit index stored in the modifiable: modifiables carry no vtable pointer (issue 8 §2).
+struct ModType {
+  std::uint64_t (*value_hash)(const ModBase*);
+  void (*destroy)(ModBase*);
+  std::uint32_t bytes;
+};
+namespace detail {
+std::uint16_t register_mod_type(const ModType* t);  // thread-safe; ContractError past 65 535 types
+extern const ModType* mod_types[std::size_t{1} << 16];  // written once per type, before its first use
+inline const ModType* mod_type(std::uint16_t id) { return mod_types[id]; }
+template <class M>
+struct ModTypeOf {
+  static std::uint64_t hash(const ModBase* m) { return static_cast<const M*>(m)->value_digest(); }
+  static void destroy(ModBase* m) { static_cast<M*>(m)->~M(); }
+  static constexpr ModType desc{&hash, &destroy, sizeof(M)};
+  static std::uint16_t id() {
+    static const std::uint16_t i = register_mod_type(&desc);
+    return i;
+  }
+};
+}  // namespace detail
+
+// A modifiable: 40 bytes before its value (name, reader list, writer, key-index head, flags, type).
 struct ModBase {
   std::uint64_t name = 0;       // canonical: allocation key, or the input's name
   ReadNode* readers = nullptr;  // intrusive list of live reads
   WriteNode* writer = nullptr;  // the write of the current execution (owned modifiables)
-  AllocNode* owner = nullptr;   // the allocation (null for inputs)
   KeyedNode* keyed = nullptr;   // memo/alloc nodes whose key's first modifiable is this one
   bool input = false;
   bool written = false;
   bool dead = false;
   bool imperative = false;      // an IMod
   bool external = false;        // a traceable allocated in a run: set by its owner between runs
-  std::uint32_t bytes = 0;
-  virtual ~ModBase() = default;
-  virtual std::uint64_t value_hash() const = 0;  // of the current value (signature)
+  std::uint16_t type = 0;       // index of its ModType (set by the runtime at allocation)
+  const ModType& descriptor() const { return *detail::mod_type(type); }
+  std::uint64_t value_hash() const { return descriptor().value_hash(this); }  // of the current value (signature)
 };
 
 template <class T>
 struct Mod : ModBase {
   T value{};
-  std::uint64_t value_hash() const override { return sac::value_hash(value); }
+  std::uint64_t value_digest() const { return sac::value_hash(value); }
 };
 template <class T>
 using Box = Mod<T>;  // ΔML's name
@@ -291,7 +313,7 @@ template <class T>
 struct IMod : IModBase {
   T initial{};
   IMod() { first.value = &initial; }
-  std::uint64_t value_hash() const override { return sac::value_hash(initial); }
+  std::uint64_t value_digest() const { return sac::value_hash(initial); }
 };
 template <class T>
 using IBox = IMod<T>;
@@ -299,7 +321,8 @@ using IBox = IMod<T>;
 inline std::uint64_t canon_key(const ModBase* m) { return m ? m->name : 0x6e696cULL; }
 
 static_assert(sizeof(Node) == 32, "sac: Node should reuse the Stamp's tail padding");
-static_assert(sizeof(ReadNode) == 88 && sizeof(AllocNode) == 72 && sizeof(WriteNode) == 40 && sizeof(EndNode) == 32);
+static_assert(sizeof(ModBase) == 40 && sizeof(Mod<long long>) == 48, "sac: a modifiable carries no vtable pointer");
+static_assert(sizeof(ReadNode) == 80 && sizeof(AllocNode) == 72 && sizeof(WriteNode) == 40 && sizeof(EndNode) == 32);
 
 // ---- statistics -------------------------------------------------------------------------------
 struct Stats {
@@ -467,6 +490,7 @@ class Runtime {
     append(r);
     r->mod = m;
     r->ver = v;
+    r->flag = true;
     link_reader(r, &v->readers);
     {
       FreshScope fs(*this, read_scope(m));
@@ -546,7 +570,6 @@ class Runtime {
     append(a);
     a->hash = m->name;  // tag stays null: a fresh allocation, never indexed
     a->mod = m;
-    m->owner = a;
     return m;
   }
   template <class T>
@@ -587,7 +610,6 @@ class Runtime {
     a->hash = h;
     a->tag = tag<std::pair<M, A>>();
     a->mod = m;
-    m->owner = a;
     index(a, anchor);
     return m;
   }
@@ -795,7 +817,7 @@ class Runtime {
     static_assert(alignof(M) <= 8, "sac: modifiable values need at most 8-byte alignment");
     void* p = raw_alloc(sizeof(M));
     auto* m = new (p) M();
-    m->bytes = sizeof(M);
+    m->type = detail::ModTypeOf<M>::id();
     return m;
   }
   void free_node(Node* n);
