@@ -70,8 +70,11 @@ void* Runtime::destroy_node(Node* n) {
   switch (n->kind) {
     case Kind::ReadStart:
       return destroy_as<ReadNode>(n);
-    case Kind::MemoStart:
-      return destroy_as<MemoNode>(n);
+    case Kind::MemoStart: {
+      auto* m = static_cast<MemoNode*>(n);
+      m->type().destroy(m);
+      return m;
+    }
     case Kind::IWrite:
       return destroy_as<IWriteNode>(n);
     case Kind::Hook:

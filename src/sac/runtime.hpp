@@ -207,13 +207,22 @@ struct KeyedNode : Node {  // memo and alloc nodes, indexed by key hash
   using Node::Node;
 };
 
-struct MemoNode : KeyedNode {
+struct MemoNode;
+// The static descriptor of a memo node's key and result types; its address is the node's tag (no
+// vtable pointer in memo nodes, issue 8 §2).
+struct MemoType {
+  std::uint64_t (*result_hash)(const MemoNode*);
+  ModBase* (*owned)(const MemoNode*);  // a memo_box destination, freed with this node's trace
+  void (*destroy)(MemoNode*);
+};
+
+struct MemoNode : KeyedNode {  // MemoImpl holds the key and result
   const Label* label = nullptr;
   Node* end = nullptr;
   MemoNode() : KeyedNode(Kind::MemoStart) {}
-  virtual ~MemoNode() = default;  // MemoImpl holds the key and result
-  virtual std::uint64_t result_hash() const = 0;
-  virtual ModBase* owned() const = 0;  // a memo_box destination, freed with this node's trace
+  const MemoType& type() const { return *static_cast<const MemoType*>(tag); }
+  std::uint64_t result_hash() const { return type().result_hash(this); }
+  ModBase* owned() const { return type().owned(this); }
 };
 
 struct AllocNode : KeyedNode {
@@ -322,7 +331,8 @@ inline std::uint64_t canon_key(const ModBase* m) { return m ? m->name : 0x6e696c
 
 static_assert(sizeof(Node) == 32, "sac: Node should reuse the Stamp's tail padding");
 static_assert(sizeof(ModBase) == 40 && sizeof(Mod<long long>) == 48, "sac: a modifiable carries no vtable pointer");
-static_assert(sizeof(ReadNode) == 80 && sizeof(AllocNode) == 72 && sizeof(WriteNode) == 40 && sizeof(EndNode) == 32);
+static_assert(sizeof(ReadNode) == 80 && sizeof(MemoNode) == 80 && sizeof(AllocNode) == 72 && sizeof(WriteNode) == 40 &&
+              sizeof(EndNode) == 32);
 
 // ---- statistics -------------------------------------------------------------------------------
 struct Stats {
@@ -637,7 +647,6 @@ class Runtime {
     M* m = make_node<M>(key);
     append(m);
     m->hash = h;
-    m->tag = tag<M>();
     m->label = &label;
     R result = [&] {
       FreshScope fs(*this, h);
@@ -708,12 +717,14 @@ class Runtime {
   struct MemoImpl : MemoNode {  // Owns: result is a destination this node allocated (memo_box)
     Key key;
     R result{};
-    explicit MemoImpl(const Key& k) : key(k) {}
-    std::uint64_t result_hash() const override { return sac::value_hash(result); }
-    ModBase* owned() const override {
-      if constexpr (Owns) return result;
+    explicit MemoImpl(const Key& k) : key(k) { tag = &desc; }
+    static std::uint64_t hash_of(const MemoNode* n) { return sac::value_hash(static_cast<const MemoImpl*>(n)->result); }
+    static ModBase* owned_by(const MemoNode* n) {
+      if constexpr (Owns) return static_cast<const MemoImpl*>(n)->result;
       else return nullptr;
     }
+    static void destroy(MemoNode* n) { static_cast<MemoImpl*>(n)->~MemoImpl(); }
+    static constexpr MemoType desc{&hash_of, &owned_by, &destroy};
   };
   template <class Keys>
   struct AllocImpl : AllocNode {  // the full key, compared on reuse (not only its hash)
@@ -877,7 +888,7 @@ class Runtime {
   M* find_memo(std::uint64_t h, const Label& label, const Key& key, const ModBase* anchor) const {
     M* best = nullptr;
     for (KeyedNode* n = chain(h, anchor); n; n = n->hnext) {
-      if (n->hash != h || n->tag != tag<M>() || n->kind != Kind::MemoStart) continue;
+      if (n->hash != h || n->tag != &M::desc || n->kind != Kind::MemoStart) continue;
       auto* m = static_cast<M*>(n);
       if ((m->label != &label && std::strcmp(m->label->name, label.name) != 0) || !(m->key == key)) continue;
       if (!in_window(m) || !OrderList::before(m->end, finger_)) continue;
