@@ -66,6 +66,7 @@ CertificateId MotionSimulator::add(const Polynomial& p) {
   int outcome = poly::sign_before(p, now_);
   r.exact = std::make_unique<Certificate>(Certificate{p, poly::LatticeRootSolver(p, bits_), outcome, std::nullopt});
   r.outcome = outcome;
+  r.approx = poly::double_coefficients(p);
   ++counters_.exact_certificates;
   return add_record(std::move(r));
 }
@@ -173,9 +174,22 @@ void MotionSimulator::schedule(Record& r, CertificateId id) {
     }
   } else {
     Certificate& c = *r.exact;
-    long long before = c.solver.sturm_queries;
-    c.failure = c.solver.next_failure_after(now_, lattice_point(last_k_big_));
-    counters_.sturm_queries += c.solver.sturm_queries - before;
+    bool decided = false;
+    if (options_.machine_fast_path && options_.failure_filter && small_lattice_) {
+      poly::FailureFilterResult f = poly::filtered_next_failure(c.polynomial, r.approx, bits_, now_k_, last_k_);
+      if ((decided = f.decided)) {
+        ++counters_.poly_filter_decided;
+        c.failure.reset();
+        if (f.failure) c.failure = Integer(*f.failure);
+      } else {
+        ++counters_.poly_filter_fallbacks;
+      }
+    }
+    if (!decided) {
+      long long before = c.solver.sturm_queries;
+      c.failure = c.solver.next_failure_after(now_, lattice_point(last_k_big_));
+      counters_.sturm_queries += c.solver.sturm_queries - before;
+    }
     if (c.failure) {
       r.scheduled = true;
       if (small_lattice_)
