@@ -2,6 +2,8 @@
 
 #include "exact/error.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -12,67 +14,71 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// A closed interval of reals; every operation rounds outward by one ulp, which covers the
-// round-to-nearest error of the operation (and underflow: nextafter steps at least one subnormal).
+// A closed interval of reals. Every operation widens its rounded result r by |r|·2^−51 + 2^−1022:
+// more than the round-to-nearest error 2^−53·|r| of the operation plus the rounding of the
+// widening itself, and than any underflow error (≤ 2^−1074). Non-finite results give the whole line.
 struct Iv {
   double lo, hi;
 };
 constexpr Iv kEntire{-kInf, kInf};
-double down(double x) { return std::nextafter(x, -kInf); }
-double up(double x) { return std::nextafter(x, kInf); }
-Iv finite_or_entire(double lo, double hi) {
-  if (!std::isfinite(lo) || !std::isfinite(hi)) return kEntire;  // also catches NaN
-  return {lo, hi};
+constexpr double kRel = 0x1p-51, kAbs = 0x1p-1022;
+Iv widened(double lo, double hi) {
+  if (!(std::fabs(lo) < kInf) || !(std::fabs(hi) < kInf)) return kEntire;  // also NaN
+  return {lo - (std::fabs(lo) * kRel + kAbs), hi + (std::fabs(hi) * kRel + kAbs)};
 }
+bool finite(Iv a) { return std::fabs(a.lo) < kInf && std::fabs(a.hi) < kInf; }
 Iv add(Iv a, Iv b) {
-  if (!std::isfinite(a.lo) || !std::isfinite(b.lo) || !std::isfinite(a.hi) || !std::isfinite(b.hi)) return kEntire;
-  return finite_or_entire(down(a.lo + b.lo), up(a.hi + b.hi));
+  if (!finite(a) || !finite(b)) return kEntire;
+  return widened(a.lo + b.lo, a.hi + b.hi);
 }
 Iv mul(Iv a, Iv b) {
-  if (!std::isfinite(a.lo) || !std::isfinite(b.lo) || !std::isfinite(a.hi) || !std::isfinite(b.hi)) return kEntire;
-  double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
-  double lo = p[0], hi = p[0];
-  for (double x : p) {
-    if (std::isnan(x)) return kEntire;
-    lo = x < lo ? x : lo;
-    hi = x > hi ? x : hi;
-  }
-  return finite_or_entire(down(lo), up(hi));
+  if (!finite(a) || !finite(b)) return kEntire;
+  double p0 = a.lo * b.lo, p1 = a.lo * b.hi, p2 = a.hi * b.lo, p3 = a.hi * b.hi;  // finite: no NaN
+  return widened(std::min(std::min(p0, p1), std::min(p2, p3)), std::max(std::max(p0, p1), std::max(p2, p3)));
 }
 int sign_of(Iv v) { return v.lo > 0 ? 1 : v.hi < 0 ? -1 : 0; }  // 0: may contain zero
 
-Iv horner(const std::vector<Iv>& c, Iv x) {
-  Iv y = c.back();
-  for (std::size_t i = c.size() - 1; i-- > 0;) y = add(mul(y, x), c[i]);
+constexpr int kMaxDegree = 15;  // higher degrees are left to the exact path
+using Coefficients = std::array<Iv, kMaxDegree + 1>;
+
+Iv horner(const Coefficients& c, int n, Iv x) {
+  Iv y = c[static_cast<std::size_t>(n)];
+  for (int i = n - 1; i >= 0; --i) y = add(mul(y, x), c[static_cast<std::size_t>(i)]);
   return y;
 }
 
 class Filter {
  public:
-  Filter(const Polynomial& p, const DoubleCoefficients& approx, int bits) : p_(p), approx_(approx), bits_(bits) {
-    for (double c : approx.c) coeff_.push_back({down(c), up(c)});  // mpz_get_d truncates: < 1 ulp
-    for (std::size_t i = 1; i < coeff_.size(); ++i)
-      deriv_.push_back(mul(Iv{double(i), double(i)}, coeff_[i]));
-    if (deriv_.empty()) deriv_.push_back({0, 0});
+  Filter(const Polynomial& p, const DoubleCoefficients& approx, int bits)
+      : p_(p), approx_(approx), bits_(bits), n_(p.degree()), inv_scale_(std::ldexp(1.0, -bits)) {
+    if (!approx.usable || n_ > kMaxDegree) return;
+    for (int i = 0; i <= n_; ++i)  // mpz_get_d truncates: < 1 ulp, inside the widening
+      coeff_[static_cast<std::size_t>(i)] = widened(approx.c[static_cast<std::size_t>(i)], approx.c[static_cast<std::size_t>(i)]);
+    for (int i = 1; i <= n_; ++i)
+      deriv_[static_cast<std::size_t>(i - 1)] = mul(Iv{double(i), double(i)}, coeff_[static_cast<std::size_t>(i)]);
+    if (n_ == 0) deriv_[0] = {0, 0};
   }
 
   FailureFilterResult run(std::int64_t a, std::int64_t b) {
     FailureFilterResult r;
-    if (!approx_.usable) return r;
+    if (!approx_.usable || n_ > kMaxDegree) return r;
     if (a >= b) {
       r.decided = true;
       return r;
     }
     // Ranges [lo, hi] of lattice indices, leftmost on top: the first failure found is the earliest.
-    std::vector<std::pair<std::int64_t, std::int64_t>> stack{{a, b}};
+    // Each split leaves its right half below the left one: at most 64 levels of ranges < 2^63.
+    std::pair<std::int64_t, std::int64_t> stack[70];
+    int top = 0;
+    stack[top++] = {a, b};
     int budget = 4096;  // range evaluations before giving up (keeps the worst case bounded)
-    while (!stack.empty()) {
-      auto [lo, hi] = stack.back();
-      stack.pop_back();
+    while (top > 0) {
+      auto [lo, hi] = stack[--top];
       if (--budget < 0) return r;
-      Iv x{std::ldexp(down(double(lo)), -bits_), std::ldexp(up(double(hi)), -bits_)};
-      if (sign_of(horner(coeff_, x)) != 0) continue;  // no root in [lo·δ, hi·δ]
-      if (int d = sign_of(horner(deriv_, x)); d != 0) {
+      // [lo·δ, hi·δ] enclosed: double(k) rounds to nearest, the widening covers it; ·2^−b is exact.
+      Iv x = widened(double(lo) * inv_scale_, double(hi) * inv_scale_);
+      if (sign_of(horner(coeff_, n_, x)) != 0) continue;  // no root in [lo·δ, hi·δ]
+      if (int d = sign_of(horner(deriv_, std::max(n_ - 1, 0), x)); d != 0) {
         // p strictly monotone on the range: sign_before changes at most once along it.
         int s_lo = sign_before(lo, d), s_hi = sign_before(hi, d);
         if (s_lo == s_hi) continue;
@@ -86,8 +92,8 @@ class Filter {
       }
       if (hi - lo == 1) return r;  // a double root or roots closer than δ: undecided
       std::int64_t mid = lo + (hi - lo) / 2;
-      stack.push_back({mid, hi});
-      stack.push_back({lo, mid});
+      stack[top++] = {mid, hi};
+      stack[top++] = {lo, mid};
     }
     r.decided = true;
     return r;
@@ -103,7 +109,7 @@ class Filter {
   int sign_at(std::int64_t k) const {
     int n = p_.degree();
     if (k > -(std::int64_t{1} << 53) && k < (std::int64_t{1} << 53)) {
-      double x = std::ldexp(double(k), -bits_);  // exact
+      double x = double(k) * inv_scale_;  // exact
       double ax = std::fabs(x);
       double y = approx_.c.back(), bound = std::fabs(approx_.c.back());
       for (int i = n - 1; i >= 0; --i) {
@@ -121,8 +127,9 @@ class Filter {
 
   const Polynomial& p_;
   const DoubleCoefficients& approx_;
-  int bits_;
-  std::vector<Iv> coeff_, deriv_;
+  int bits_, n_;
+  double inv_scale_;  // 2^−bits
+  Coefficients coeff_{}, deriv_{};
 };
 
 }  // namespace
