@@ -79,6 +79,40 @@ TEST(FailureFilter, DegenerateCubicsDecideAsTheExactPathOrFallBack) {
   std::printf("degenerate: %lld decided, %lld left to the exact path\n", t.decided, t.undecided);
 }
 
+TEST(FailureFilter, RootsWithinRoundingOfALatticePointDecideAsTheExactPath) {
+  // (2^e·t − (k·2^(e−b) + d)) · q(t): a root d·2^−e away from the lattice point kδ, with e up to 60,
+  // so the enclosures' rounding (coefficients ≈ 2^60, values far beyond 2^53) decides whether the
+  // filter wrongly excludes the root's range or puts it on the wrong side of kδ.
+  std::mt19937_64 rng(5);
+  Tally t;
+  for (int i = 0; i < 2000; ++i) {
+    int bits = static_cast<int>(rng() % 8), e = bits + 20 + static_cast<int>(rng() % (41 - bits));
+    long long k = static_cast<long long>(rng() % 2000) - 1000, d = static_cast<long long>(rng() % 5) - 2;
+    std::vector<Integer> lin{-(Integer(k) << (e - bits)) - d, Integer(1) << e};
+    Polynomial p(lin);
+    switch (rng() % 3) {
+      case 0: p = p * P({1, 0, 1}); break;                                   // t² + 1
+      case 1: p = p * P({static_cast<long long>(rng() % 100) - 50, 1}); break;  // another simple root
+      default: p = p * P({-3, 0, static_cast<long long>(rng() % 7) + 1}); break;
+    }
+    std::int64_t a = k - static_cast<std::int64_t>(rng() % 3000), b = k + static_cast<std::int64_t>(rng() % 3000);
+    same_decision(p, bits, a, b, t);
+  }
+  EXPECT_GT(t.decided, 10 * t.undecided) << t.decided << " decided, " << t.undecided << " undecided";
+  // Lattice indices near 2^54…2^61 (bits 0): double(k) is rounded, by up to 2^8, so a range's end
+  // can round past a root at k + 1/2 in its last lattice interval; only the widening keeps it in.
+  Tally far;
+  for (int i = 0; i < 2000; ++i) {
+    std::int64_t k = static_cast<std::int64_t>((std::int64_t{1} << (54 + rng() % 7)) + static_cast<std::int64_t>(rng() % 100000));
+    Polynomial p(std::vector<Integer>{-(Integer(2) * k + 1), Integer(2)});
+    if (rng() % 2) p = p * P({1, 0, 1});
+    std::int64_t r = static_cast<std::int64_t>(rng() % 1000);
+    if (rng() % 2) same_decision(p, 0, k - r, k + 1, far);  // the root in the last interval
+    else same_decision(p, 0, k, k + 1 + r, far);             // the root in the first interval
+  }
+  EXPECT_GT(far.decided, 10 * far.undecided) << far.decided << " decided, " << far.undecided << " undecided";
+}
+
 TEST(FailureFilter, HandPickedCases) {
   Tally t;
   // A double root at t = 1 (no sign change) and a simple one at t = 3: the failure is interval 3·2^b.
