@@ -20,7 +20,8 @@
 //    whenever it answers: fl(q) ∉ ℤ, |fl(q)| < 2^52) or else from an exact __int128 floor division.
 //    Everything else takes the exact path (Polynomial + LatticeRootSolver), whose failure interval
 //    is first asked of the double filter of poly/failure_filter.hpp (on a machine lattice; it
-//    answers what next_failure_after answers, or nothing, and then Sturm decides).
+//    answers what next_failure_after answers, or nothing, and then Sturm decides); their signs
+//    just before lattice points go through filtered_sign_at first (exact fallback).
 //    The queue is lattice_queue.hpp (buckets for the next 1024 lattice intervals, a heap beyond,
 //    lazy deletion); no GMP number is allocated per event on the fast path.
 #include <cstdint>
