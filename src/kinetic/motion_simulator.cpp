@@ -15,6 +15,15 @@ constexpr std::int64_t kMachineLimit = std::int64_t{1} << 62;  // |c| and lattic
 
 bool fits_machine(const Integer& c) { return exact::bit_length(c) <= 61; }  // |c| < 2^61 ≤ 2^62
 
+// sign_before(p, kδ), exactly: where p(kδ) ≠ 0 it is that sign, decided by the double filter of
+// filtered_sign_at (exact fallback inside); at a root, the derivatives decide (exact).
+int sign_before_lattice(const Polynomial& p, const poly::DoubleCoefficients& approx, std::int64_t k, int bits) {
+  if (approx.usable) {
+    if (int s = poly::filtered_sign_at(p, approx, Integer(k), bits); s != 0) return s;
+  }
+  return poly::sign_before(p, Dyadic(Integer(k), -bits));
+}
+
 }  // namespace
 
 MotionSimulator::MotionSimulator(int lattice_bits, Dyadic horizon)
@@ -63,7 +72,8 @@ CertificateId MotionSimulator::add(const Polynomial& p) {
       std::all_of(p.coefficients().begin(), p.coefficients().end(), fits_machine))
     return add_linear(static_cast<std::int64_t>(p[0]), p.degree() == 1 ? static_cast<std::int64_t>(p[1]) : 0);
   Record r;
-  int outcome = poly::sign_before(p, now_);
+  r.approx = poly::double_coefficients(p);
+  int outcome = options_.machine_fast_path && small_lattice_ ? sign_before_lattice(p, r.approx, now_k_, bits_) : poly::sign_before(p, now_);
   r.exact = std::make_unique<Certificate>(Certificate{p, poly::LatticeRootSolver(p, bits_), outcome, std::nullopt});
   r.outcome = outcome;
   ++counters_.exact_certificates;
@@ -173,9 +183,22 @@ void MotionSimulator::schedule(Record& r, CertificateId id) {
     }
   } else {
     Certificate& c = *r.exact;
-    long long before = c.solver.sturm_queries;
-    c.failure = c.solver.next_failure_after(now_, lattice_point(last_k_big_));
-    counters_.sturm_queries += c.solver.sturm_queries - before;
+    bool decided = false;
+    if (options_.machine_fast_path && options_.failure_filter && small_lattice_) {
+      poly::FailureFilterResult f = poly::filtered_next_failure(c.polynomial, r.approx, bits_, now_k_, last_k_);
+      if ((decided = f.decided)) {
+        ++counters_.poly_filter_decided;
+        c.failure.reset();
+        if (f.failure) c.failure = Integer(*f.failure);
+      } else {
+        ++counters_.poly_filter_fallbacks;
+      }
+    }
+    if (!decided) {
+      long long before = c.solver.sturm_queries;
+      c.failure = c.solver.next_failure_after(now_, lattice_point(last_k_big_));
+      counters_.sturm_queries += c.solver.sturm_queries - before;
+    }
     if (c.failure) {
       r.scheduled = true;
       if (small_lattice_)
@@ -251,7 +274,9 @@ std::optional<std::vector<CertificateId>> MotionSimulator::next_batch(const Dyad
     } else {
       r.exact->failure.reset();
       r.exact->outcome = r.outcome;
-      KMR_CHECK(r.outcome == poly::sign_before(r.exact->polynomial, now_), "a popped failure did not change the sign");
+      KMR_CHECK(r.outcome == (options_.machine_fast_path && small_lattice_ ? sign_before_lattice(r.exact->polynomial, r.approx, now_k_, bits_)
+                                             : poly::sign_before(r.exact->polynomial, now_)),
+                "a popped failure did not change the sign");
     }
     schedule(r, id);
   }

@@ -18,7 +18,10 @@
 //    two int64 coefficients. Its signs at lattice points are exact in __int128; its failure
 //    interval floor(−c0·2^b / c1) comes from the double filter of poly/linear_root.hpp (exact
 //    whenever it answers: fl(q) ∉ ℤ, |fl(q)| < 2^52) or else from an exact __int128 floor division.
-//    Everything else takes the exact path (Polynomial + LatticeRootSolver).
+//    Everything else takes the exact path (Polynomial + LatticeRootSolver), whose failure interval
+//    is first asked of the double filter of poly/failure_filter.hpp (on a machine lattice; it
+//    answers what next_failure_after answers, or nothing, and then Sturm decides); their signs
+//    just before lattice points go through filtered_sign_at first (exact fallback).
 //    The queue is lattice_queue.hpp (buckets for the next 1024 lattice intervals, a heap beyond,
 //    lazy deletion); no GMP number is allocated per event on the fast path.
 #include <cstdint>
@@ -30,6 +33,7 @@
 #include <vector>
 
 #include "kinetic/lattice_queue.hpp"
+#include "poly/failure_filter.hpp"
 #include "poly/sturm.hpp"
 
 namespace kmr::kinetic {
@@ -59,10 +63,16 @@ struct SimulatorCounters {
   // queries; sign evaluations at lattice points on the machine path (outcomes and checks).
   long long filter_decided = 0, filter_fallbacks = 0, exact_certificates = 0;
   long long sturm_queries = 0, machine_sign_evaluations = 0;
+  // Exact-path certificates (degree ≥ 2, or big coefficients) whose failure interval the double
+  // filter of poly/failure_filter.hpp decided, or left to the Sturm path.
+  long long poly_filter_decided = 0, poly_filter_fallbacks = 0;
 };
 
 struct SimulatorOptions {
   bool machine_fast_path = true;  // false: every certificate on the exact path (for comparisons)
+  // With machine_fast_path, on a machine lattice: exact-path certificates try the double filter
+  // for their failure interval (poly/failure_filter.hpp; the same decision as Sturm) first.
+  bool failure_filter = true;
 };
 
 class MotionSimulator {
@@ -103,6 +113,7 @@ class MotionSimulator {
     bool pending = false;              // popped machine record whose rescheduling is deferred
     int outcome = 0;
     std::unique_ptr<Certificate> exact;
+    poly::DoubleCoefficients approx;  // of exact->polynomial, for the failure filter
   };
   using Entry = LatticeQueue::Entry;  // stale once its record is gone or rescheduled
   static constexpr std::uint32_t kNoRecord = 0xffffffffu;

@@ -90,19 +90,26 @@ int SturmSequence::roots_below(const Dyadic& t) const {
 Integer lattice_ceil(const Dyadic& t, int bits) { return t.shifted(bits).ceil(); }
 
 LatticeRootSolver::LatticeRootSolver(const Polynomial& p, int lattice_bits)
-    : p_(p), p_approx_(double_coefficients(p)), bits_(lattice_bits), sturm_(p) {
+    : p_(p), p_approx_(double_coefficients(p)), bits_(lattice_bits) {
+  if (p.is_zero()) throw InputError("identically zero polynomial: it has no isolated roots");
   if (lattice_bits < 0) throw InputError("lattice bits must be >= 0");
+}
+
+const SturmSequence& LatticeRootSolver::sturm() const {
+  if (sturm_) return *sturm_;
+  sturm_.emplace(p_);
   // Cauchy bound: |r| < 1 + max|ci/cn| ≤ 2^(bitlen(max|ci|) − bitlen(|cn|) + 2).
-  const Polynomial& q = sturm_.square_free();
+  const Polynomial& q = sturm_->square_free();
   std::int64_t top = 0;
   for (const auto& c : q.coefficients()) top = std::max(top, exact::bit_length(c));
   std::int64_t e = std::max<std::int64_t>(0, top - exact::bit_length(q.leading()) + 2);
   root_bound_k_ = Integer(1) << static_cast<unsigned>(e + bits_);
+  return *sturm_;
 }
 
 int LatticeRootSolver::roots_below_lattice(const Integer& k) const {
   ++sturm_queries;
-  return sturm_.roots_below(k, bits_);
+  return sturm().roots_below(k, bits_);
 }
 
 int LatticeRootSolver::sign_before_lattice(const Integer& k) const {
@@ -116,6 +123,7 @@ bool LatticeRootSolver::sign_changes_across(const Integer& k) const {
 }
 
 std::pair<Integer, Integer> LatticeRootSolver::clamp_range(const Integer& lo, const Integer& hi) const {
+  sturm();  // sets root_bound_k_
   Integer a = lo < -root_bound_k_ ? Integer(-root_bound_k_) : lo;
   Integer b = hi > root_bound_k_ ? root_bound_k_ : hi;
   return {a, b};
@@ -125,7 +133,7 @@ template <class Visit>
 bool LatticeRootSolver::scan(const Integer& a, const Integer& b, int ca, int cb, Visit& visit) const {
   if (cb == ca) return false;
   if (b - a == 1) return visit(LatticeInterval{a, cb - ca, sign_changes_across(a)});
-  const Polynomial& q = sturm_.square_free();
+  const Polynomial& q = sturm().square_free();
   if (q.degree() == 1) {
     // One simple root r = −c0/c1, known to lie in [aδ, bδ): its interval is floor(r·2^b) in closed form.
     Integer num = -q[0] << static_cast<unsigned>(bits_), den = q[1];

@@ -64,8 +64,8 @@ class LatticeRootSolver {
   const Polynomial& polynomial() const { return p_; }
   int lattice_bits() const { return bits_; }
   Dyadic lattice_point(const Integer& k) const { return Dyadic(k, -bits_); }
-  int distinct_real_roots() const { return sturm_.distinct_real_roots(); }
-  int count_roots(const Dyadic& lo, const Dyadic& hi) const { return sturm_.count_roots(lo, hi); }
+  int distinct_real_roots() const { return sturm().distinct_real_roots(); }
+  int count_roots(const Dyadic& lo, const Dyadic& hi) const { return sturm().count_roots(lo, hi); }
 
   std::vector<LatticeInterval> isolate(const Dyadic& from, const Dyadic& to) const;
   std::optional<Integer> next_failure_after(const Dyadic& t, const Dyadic& horizon) const;
@@ -73,7 +73,7 @@ class LatticeRootSolver {
   // Distinct real roots < m / 2^s: one Sturm query (counted), for refinement below the lattice.
   int roots_below(const Integer& m, long long s) const {
     ++sturm_queries;
-    return sturm_.roots_below(m, s);
+    return sturm().roots_below(m, s);
   }
 
   // Lattice-indexed helpers: sign of p just before kδ, and whether interval k changes sign.
@@ -95,8 +95,11 @@ class LatticeRootSolver {
   Polynomial p_;
   DoubleCoefficients p_approx_;
   int bits_;
-  SturmSequence sturm_;
-  Integer root_bound_k_;  // every real root r has |r| < root_bound_k_·δ
+  // Built on first use (a certificate whose failures the double filter decides never needs it);
+  // so a solver is not safe to share between threads.
+  const SturmSequence& sturm() const;
+  mutable std::optional<SturmSequence> sturm_;
+  mutable Integer root_bound_k_;  // every real root r has |r| < root_bound_k_·δ (set with sturm_)
 };
 
 // Lattice index helpers: the first k with kδ ≥ t, for δ = 2^−bits.

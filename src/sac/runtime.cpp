@@ -2,7 +2,9 @@
 
 #include <pthread.h>
 
+#include <atomic>
 #include <cstdlib>
+#include <mutex>
 
 #include <cstdio>
 #include <exception>
@@ -43,16 +45,16 @@ Runtime::~Runtime() {
     Stamp* nx = s->next;
     Node* n = static_cast<Node*>(s);
     if (n->kind == Kind::Alloc) {
-      if (ModBase* m = static_cast<AllocNode*>(n)->mod) m->~ModBase();
+      if (ModBase* m = static_cast<AllocNode*>(n)->mod) m->descriptor().destroy(m);
     }
     if (n->kind == Kind::MemoStart) {
-      if (ModBase* m = static_cast<MemoNode*>(n)->owned()) m->~ModBase();
+      if (ModBase* m = static_cast<MemoNode*>(n)->owned()) m->descriptor().destroy(m);
     }
     destroy_node(n);
     s = nx;
   }
-  for (ModBase* m : dead_) m->~ModBase();
-  for (ModBase* m : inputs_) m->~ModBase();
+  for (ModBase* m : dead_) m->descriptor().destroy(m);
+  for (ModBase* m : inputs_) m->descriptor().destroy(m);
 }
 
 namespace {
@@ -68,8 +70,11 @@ void* Runtime::destroy_node(Node* n) {
   switch (n->kind) {
     case Kind::ReadStart:
       return destroy_as<ReadNode>(n);
-    case Kind::MemoStart:
-      return destroy_as<MemoNode>(n);
+    case Kind::MemoStart: {
+      auto* m = static_cast<MemoNode*>(n);
+      m->type().destroy(m);
+      return m;
+    }
     case Kind::IWrite:
       return destroy_as<IWriteNode>(n);
     case Kind::Hook:
@@ -93,11 +98,29 @@ void Runtime::free_node(Node* n) {
 
 void Runtime::free_mod(ModBase* m) {
   unindex_all(m);  // keys naming a freed modifiable can never match again (no address reuse)
-  std::size_t b = m->bytes;
+  const ModType& t = m->descriptor();
+  std::size_t b = t.bytes;
   if (!m->input) --live_owned_;
-  m->~ModBase();
+  t.destroy(m);
   raw_free(m, b);
 }
+
+// ---- modifiable types: a registry of static descriptors, indexed by 16 bits -------------------
+namespace detail {
+namespace {
+std::mutex mod_types_mutex;
+std::atomic<std::uint32_t> mod_types_count{1};  // index 0 is never given out
+}  // namespace
+const ModType* mod_types[std::size_t{1} << 16] = {};
+std::uint16_t register_mod_type(const ModType* t) {
+  std::lock_guard<std::mutex> lock(mod_types_mutex);
+  std::uint32_t i = mod_types_count.load();
+  KMR_CHECK(i < (std::uint32_t{1} << 16), "sac: more than 65535 modifiable types");
+  mod_types[i] = t;
+  mod_types_count.store(i + 1);
+  return static_cast<std::uint16_t>(i);
+}
+}  // namespace detail
 
 // ---- errors -----------------------------------------------------------------------------------
 void Runtime::fail(const std::string& what) { throw ContractError("sac: " + what); }
@@ -138,8 +161,12 @@ bool Runtime::check_writable(const ModBase* m) const {
 }
 
 // ---- readers and the queue of affected reads --------------------------------------------------
+// The head of the reader list r is on: its modifiable's, or (an IMod read) its version's.
+static ReadNode** reader_head(ReadNode* r) {
+  return r->flag ? &static_cast<IReadNode*>(r)->ver->readers : &r->mod->readers;
+}
+
 void Runtime::link_reader(ReadNode* r, ReadNode** head) {
-  r->rhead = head;
   r->rprev = nullptr;
   r->rnext = *head;
   if (*head) (*head)->rprev = r;
@@ -148,7 +175,7 @@ void Runtime::link_reader(ReadNode* r, ReadNode** head) {
 
 void Runtime::unlink_reader(ReadNode* r) {
   if (r->rprev) r->rprev->rnext = r->rnext;
-  else *r->rhead = r->rnext;
+  else *reader_head(r) = r->rnext;
   if (r->rnext) r->rnext->rprev = r->rprev;
   r->rprev = r->rnext = nullptr;
 }
@@ -325,7 +352,6 @@ void Runtime::kill(Node* n) {
       unindex(a);
       if (ModBase* m = a->mod) {
         m->dead = true;
-        m->owner = nullptr;
         dead_.push_back(m);
       }
       break;

@@ -172,7 +172,7 @@ enum class Kind : std::uint8_t { ReadStart, End, MemoStart, Alloc, Write, IWrite
 struct Node : Stamp {
   Kind kind;
   // KeyedNode: in the runtime's hash table (else on its anchor's list); WriteNode: superseded by an
-  // earlier write (§1 item 4).
+  // earlier write (§1 item 4); ReadNode: a read of an IMod (an IReadNode).
   bool flag = false;
   std::uint16_t bytes = 0;    // allocation size (make_node checks that it fits)
   explicit Node(Kind k) : kind(k) {}
@@ -186,7 +186,6 @@ struct IVersion;
 
 struct ReadNode : Node {
   ModBase* mod = nullptr;
-  ReadNode** rhead = nullptr;  // head of the reader list it is on (a Mod's, or an IMod version's)
   ReadNode* rprev = nullptr;
   ReadNode* rnext = nullptr;
   Node* end = nullptr;
@@ -196,7 +195,7 @@ struct ReadNode : Node {
   virtual void rerun() = 0;
 };
 
-struct IReadNode : ReadNode {  // a read of an IMod: on the reader list of the version it sees
+struct IReadNode : ReadNode {  // a read of an IMod (flag set): on the reader list of the version it sees
   IVersion* ver = nullptr;
 };
 
@@ -208,13 +207,22 @@ struct KeyedNode : Node {  // memo and alloc nodes, indexed by key hash
   using Node::Node;
 };
 
-struct MemoNode : KeyedNode {
+struct MemoNode;
+// The static descriptor of a memo node's key and result types; its address is the node's tag (no
+// vtable pointer in memo nodes, issue 8 §2).
+struct MemoType {
+  std::uint64_t (*result_hash)(const MemoNode*);
+  ModBase* (*owned)(const MemoNode*);  // a memo_box destination, freed with this node's trace
+  void (*destroy)(MemoNode*);
+};
+
+struct MemoNode : KeyedNode {  // MemoImpl holds the key and result
   const Label* label = nullptr;
   Node* end = nullptr;
   MemoNode() : KeyedNode(Kind::MemoStart) {}
-  virtual ~MemoNode() = default;  // MemoImpl holds the key and result
-  virtual std::uint64_t result_hash() const = 0;
-  virtual ModBase* owned() const = 0;  // a memo_box destination, freed with this node's trace
+  const MemoType& type() const { return *static_cast<const MemoType*>(tag); }
+  std::uint64_t result_hash() const { return type().result_hash(this); }
+  ModBase* owned() const { return type().owned(this); }
 };
 
 struct AllocNode : KeyedNode {
@@ -256,26 +264,49 @@ struct HookNode : Node {
   virtual void undo() = 0;
 };
 
+// The static descriptor of a modifiable's type (its size, value digest and destructor), found by
+// a 16-bit index stored in the modifiable: modifiables carry no vtable pointer (issue 8 §2).
+struct ModType {
+  std::uint64_t (*value_hash)(const ModBase*);
+  void (*destroy)(ModBase*);
+  std::uint32_t bytes;
+};
+namespace detail {
+std::uint16_t register_mod_type(const ModType* t);  // thread-safe; ContractError past 65 535 types
+extern const ModType* mod_types[std::size_t{1} << 16];  // written once per type, before its first use
+inline const ModType* mod_type(std::uint16_t id) { return mod_types[id]; }
+template <class M>
+struct ModTypeOf {
+  static std::uint64_t hash(const ModBase* m) { return static_cast<const M*>(m)->value_digest(); }
+  static void destroy(ModBase* m) { static_cast<M*>(m)->~M(); }
+  static constexpr ModType desc{&hash, &destroy, sizeof(M)};
+  static std::uint16_t id() {
+    static const std::uint16_t i = register_mod_type(&desc);
+    return i;
+  }
+};
+}  // namespace detail
+
+// A modifiable: 40 bytes before its value (name, reader list, writer, key-index head, flags, type).
 struct ModBase {
   std::uint64_t name = 0;       // canonical: allocation key, or the input's name
   ReadNode* readers = nullptr;  // intrusive list of live reads
   WriteNode* writer = nullptr;  // the write of the current execution (owned modifiables)
-  AllocNode* owner = nullptr;   // the allocation (null for inputs)
   KeyedNode* keyed = nullptr;   // memo/alloc nodes whose key's first modifiable is this one
   bool input = false;
   bool written = false;
   bool dead = false;
   bool imperative = false;      // an IMod
   bool external = false;        // a traceable allocated in a run: set by its owner between runs
-  std::uint32_t bytes = 0;
-  virtual ~ModBase() = default;
-  virtual std::uint64_t value_hash() const = 0;  // of the current value (signature)
+  std::uint16_t type = 0;       // index of its ModType (set by the runtime at allocation)
+  const ModType& descriptor() const { return *detail::mod_type(type); }
+  std::uint64_t value_hash() const { return descriptor().value_hash(this); }  // of the current value (signature)
 };
 
 template <class T>
 struct Mod : ModBase {
   T value{};
-  std::uint64_t value_hash() const override { return sac::value_hash(value); }
+  std::uint64_t value_digest() const { return sac::value_hash(value); }
 };
 template <class T>
 using Box = Mod<T>;  // ΔML's name
@@ -291,7 +322,7 @@ template <class T>
 struct IMod : IModBase {
   T initial{};
   IMod() { first.value = &initial; }
-  std::uint64_t value_hash() const override { return sac::value_hash(initial); }
+  std::uint64_t value_digest() const { return sac::value_hash(initial); }
 };
 template <class T>
 using IBox = IMod<T>;
@@ -299,7 +330,9 @@ using IBox = IMod<T>;
 inline std::uint64_t canon_key(const ModBase* m) { return m ? m->name : 0x6e696cULL; }
 
 static_assert(sizeof(Node) == 32, "sac: Node should reuse the Stamp's tail padding");
-static_assert(sizeof(ReadNode) == 88 && sizeof(AllocNode) == 72 && sizeof(WriteNode) == 40 && sizeof(EndNode) == 32);
+static_assert(sizeof(ModBase) == 40 && sizeof(Mod<long long>) == 48, "sac: a modifiable carries no vtable pointer");
+static_assert(sizeof(ReadNode) == 80 && sizeof(MemoNode) == 80 && sizeof(AllocNode) == 72 && sizeof(WriteNode) == 40 &&
+              sizeof(EndNode) == 32);
 
 // ---- statistics -------------------------------------------------------------------------------
 struct Stats {
@@ -467,6 +500,7 @@ class Runtime {
     append(r);
     r->mod = m;
     r->ver = v;
+    r->flag = true;
     link_reader(r, &v->readers);
     {
       FreshScope fs(*this, read_scope(m));
@@ -546,7 +580,6 @@ class Runtime {
     append(a);
     a->hash = m->name;  // tag stays null: a fresh allocation, never indexed
     a->mod = m;
-    m->owner = a;
     return m;
   }
   template <class T>
@@ -587,7 +620,6 @@ class Runtime {
     a->hash = h;
     a->tag = tag<std::pair<M, A>>();
     a->mod = m;
-    m->owner = a;
     index(a, anchor);
     return m;
   }
@@ -615,7 +647,6 @@ class Runtime {
     M* m = make_node<M>(key);
     append(m);
     m->hash = h;
-    m->tag = tag<M>();
     m->label = &label;
     R result = [&] {
       FreshScope fs(*this, h);
@@ -686,12 +717,14 @@ class Runtime {
   struct MemoImpl : MemoNode {  // Owns: result is a destination this node allocated (memo_box)
     Key key;
     R result{};
-    explicit MemoImpl(const Key& k) : key(k) {}
-    std::uint64_t result_hash() const override { return sac::value_hash(result); }
-    ModBase* owned() const override {
-      if constexpr (Owns) return result;
+    explicit MemoImpl(const Key& k) : key(k) { tag = &desc; }
+    static std::uint64_t hash_of(const MemoNode* n) { return sac::value_hash(static_cast<const MemoImpl*>(n)->result); }
+    static ModBase* owned_by(const MemoNode* n) {
+      if constexpr (Owns) return static_cast<const MemoImpl*>(n)->result;
       else return nullptr;
     }
+    static void destroy(MemoNode* n) { static_cast<MemoImpl*>(n)->~MemoImpl(); }
+    static constexpr MemoType desc{&hash_of, &owned_by, &destroy};
   };
   template <class Keys>
   struct AllocImpl : AllocNode {  // the full key, compared on reuse (not only its hash)
@@ -795,7 +828,7 @@ class Runtime {
     static_assert(alignof(M) <= 8, "sac: modifiable values need at most 8-byte alignment");
     void* p = raw_alloc(sizeof(M));
     auto* m = new (p) M();
-    m->bytes = sizeof(M);
+    m->type = detail::ModTypeOf<M>::id();
     return m;
   }
   void free_node(Node* n);
@@ -855,7 +888,7 @@ class Runtime {
   M* find_memo(std::uint64_t h, const Label& label, const Key& key, const ModBase* anchor) const {
     M* best = nullptr;
     for (KeyedNode* n = chain(h, anchor); n; n = n->hnext) {
-      if (n->hash != h || n->tag != tag<M>() || n->kind != Kind::MemoStart) continue;
+      if (n->hash != h || n->tag != &M::desc || n->kind != Kind::MemoStart) continue;
       auto* m = static_cast<M*>(n);
       if ((m->label != &label && std::strcmp(m->label->name, label.name) != 0) || !(m->key == key)) continue;
       if (!in_window(m) || !OrderList::before(m->end, finger_)) continue;

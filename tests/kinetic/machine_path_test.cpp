@@ -117,3 +117,61 @@ TEST(MachinePath, A2_1_KineticSortIsTheSameOnBothPaths) {
 }
 
 }  // namespace
+
+// The failure filter for exact-path certificates (poly/failure_filter.hpp) against Sturm alone,
+// on cubics like the hull's orient3d certificates: random ones, double and triple roots on lattice
+// points, roots closer than δ. Every batch and every outcome must be the same.
+kmr::kinetic::SimulatorCounters same_batches_with_and_without_filter(const std::vector<Polynomial>& certs, int b,
+                                                                     std::int64_t H) {
+  Dyadic horizon(Integer(H), -b);
+  MotionSimulator with(b, horizon), without(b, horizon, SimulatorOptions{true, false});
+  std::vector<CertificateId> a, z;
+  for (const auto& p : certs) {
+    a.push_back(with.add(p));
+    z.push_back(without.add(p));
+  }
+  long long batches = 0;
+  for (;;) {
+    auto x = with.next_batch(horizon), y = without.next_batch(horizon);
+    EXPECT_EQ(x.has_value(), y.has_value());
+    if (!x || !y) break;
+    EXPECT_EQ(*x, *y) << "batch " << batches;
+    EXPECT_EQ(with.now(), without.now());
+    ++batches;
+  }
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(with.outcome(a[i]), without.outcome(z[i])) << certs[i].to_string();
+  EXPECT_GT(batches, 50);
+  EXPECT_EQ(without.counters().poly_filter_decided + without.counters().poly_filter_fallbacks, 0);
+  EXPECT_LE(with.counters().sturm_queries, without.counters().sturm_queries);
+  return with.counters();
+}
+
+TEST(FailureFilterPath, A2_1_CubicCertificatesGiveTheSameBatchesWithAndWithoutTheFilter) {
+  std::mt19937_64 rng(21);
+  auto uniform = [&](std::int64_t lo, std::int64_t hi) { return std::uniform_int_distribution<std::int64_t>(lo, hi)(rng); };
+  const int b = 6;
+  const std::int64_t H = 4000;  // horizon in lattice steps
+  std::vector<Polynomial> random, degenerate;
+  for (int i = 0; i < 120; ++i) {
+    std::vector<Integer> c;
+    for (int j = 0; j < 4; ++j) c.emplace_back(uniform(-(1 << 20), 1 << 20));
+    c[3] = c[3] == 0 ? Integer(1) : c[3];
+    random.emplace_back(c);
+    Polynomial r = linear(-uniform(0, H), std::int64_t{1} << b);  // a root on a lattice point
+    Polynomial s = linear(-uniform(0, H) * 8 - uniform(-3, 3), std::int64_t{1} << (b + 3));  // near one
+    switch (i % 4) {
+      case 0: degenerate.push_back(r * r * s); break;                     // double root
+      case 1: degenerate.push_back(r * r * r); break;                     // triple root
+      case 2: degenerate.push_back(r * s * linear(uniform(-5, 5), 1)); break;
+      default: degenerate.push_back(s * s * linear(-uniform(0, 60), 1)); break;
+    }
+  }
+  auto cr = same_batches_with_and_without_filter(random, b, H);
+  EXPECT_GT(cr.poly_filter_decided, 20 * cr.poly_filter_fallbacks);  // random cubics: nearly all decided
+  if (cr.poly_filter_fallbacks == 0) EXPECT_EQ(cr.sturm_queries, 0);  // Sturm only behind the filter
+  std::vector<Polynomial> all = random;
+  all.insert(all.end(), degenerate.begin(), degenerate.end());
+  auto ca = same_batches_with_and_without_filter(all, b, H);
+  EXPECT_GT(ca.poly_filter_fallbacks, 0);  // double and triple roots ahead go to Sturm
+  EXPECT_GT(ca.poly_filter_decided, 0);
+}

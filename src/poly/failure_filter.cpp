@@ -1,0 +1,144 @@
+#include "poly/failure_filter.hpp"
+
+#include "exact/error.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace kmr::poly {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// A closed interval of reals. Every operation widens its rounded result r by |r|·2^−51 + 2^−1022:
+// more than the round-to-nearest error 2^−53·|r| of the operation plus the rounding of the
+// widening itself, and than any underflow error (≤ 2^−1074). Non-finite results give the whole line.
+struct Iv {
+  double lo, hi;
+};
+constexpr Iv kEntire{-kInf, kInf};
+constexpr double kRel = 0x1p-51, kAbs = 0x1p-1022;
+Iv widened(double lo, double hi) {
+  if (!(std::fabs(lo) < kInf) || !(std::fabs(hi) < kInf)) return kEntire;  // also NaN
+  return {lo - (std::fabs(lo) * kRel + kAbs), hi + (std::fabs(hi) * kRel + kAbs)};
+}
+bool finite(Iv a) { return std::fabs(a.lo) < kInf && std::fabs(a.hi) < kInf; }
+Iv add(Iv a, Iv b) {
+  if (!finite(a) || !finite(b)) return kEntire;
+  return widened(a.lo + b.lo, a.hi + b.hi);
+}
+Iv mul(Iv a, Iv b) {
+  if (!finite(a) || !finite(b)) return kEntire;
+  double p0 = a.lo * b.lo, p1 = a.lo * b.hi, p2 = a.hi * b.lo, p3 = a.hi * b.hi;  // finite: no NaN
+  return widened(std::min(std::min(p0, p1), std::min(p2, p3)), std::max(std::max(p0, p1), std::max(p2, p3)));
+}
+int sign_of(Iv v) { return v.lo > 0 ? 1 : v.hi < 0 ? -1 : 0; }  // 0: may contain zero
+
+constexpr int kMaxDegree = 15;  // higher degrees are left to the exact path
+using Coefficients = std::array<Iv, kMaxDegree + 1>;
+
+Iv horner(const Coefficients& c, int n, Iv x) {
+  Iv y = c[static_cast<std::size_t>(n)];
+  for (int i = n - 1; i >= 0; --i) y = add(mul(y, x), c[static_cast<std::size_t>(i)]);
+  return y;
+}
+
+class Filter {
+ public:
+  Filter(const Polynomial& p, const DoubleCoefficients& approx, int bits)
+      : p_(p), approx_(approx), bits_(bits), n_(p.degree()), inv_scale_(std::ldexp(1.0, -bits)) {
+    if (!approx.usable || n_ > kMaxDegree) return;
+    for (int i = 0; i <= n_; ++i)  // mpz_get_d truncates: < 1 ulp, inside the widening
+      coeff_[static_cast<std::size_t>(i)] = widened(approx.c[static_cast<std::size_t>(i)], approx.c[static_cast<std::size_t>(i)]);
+    for (int i = 1; i <= n_; ++i)
+      deriv_[static_cast<std::size_t>(i - 1)] = mul(Iv{double(i), double(i)}, coeff_[static_cast<std::size_t>(i)]);
+    if (n_ == 0) deriv_[0] = {0, 0};
+  }
+
+  FailureFilterResult run(std::int64_t a, std::int64_t b) {
+    FailureFilterResult r;
+    if (!approx_.usable || n_ > kMaxDegree) return r;
+    if (a >= b) {
+      r.decided = true;
+      return r;
+    }
+    // Ranges [lo, hi] of lattice indices, leftmost on top: the first failure found is the earliest.
+    // Each split leaves its right half below the left one: at most 64 levels of ranges < 2^63.
+    std::pair<std::int64_t, std::int64_t> stack[70];
+    int top = 0;
+    stack[top++] = {a, b};
+    int budget = 4096;  // range evaluations before giving up (keeps the worst case bounded)
+    while (top > 0) {
+      auto [lo, hi] = stack[--top];
+      if (--budget < 0) return r;
+      // [lo·δ, hi·δ] enclosed: double(k) rounds to nearest, the widening covers it; ·2^−b is exact.
+      Iv x = widened(double(lo) * inv_scale_, double(hi) * inv_scale_);
+      if (sign_of(horner(coeff_, n_, x)) != 0) continue;  // no root in [lo·δ, hi·δ]
+      if (int d = sign_of(horner(deriv_, std::max(n_ - 1, 0), x)); d != 0) {
+        // p strictly monotone on the range: sign_before changes at most once along it.
+        int s_lo = sign_before(lo, d), s_hi = sign_before(hi, d);
+        if (s_lo == s_hi) continue;
+        while (hi - lo > 1) {
+          std::int64_t mid = lo + (hi - lo) / 2;
+          (sign_before(mid, d) == s_lo ? lo : hi) = mid;
+        }
+        r.decided = true;
+        r.failure = lo;
+        return r;
+      }
+      if (hi - lo == 1) return r;  // a double root or roots closer than δ: undecided
+      std::int64_t mid = lo + (hi - lo) / 2;
+      stack[top++] = {mid, hi};
+      stack[top++] = {lo, mid};
+    }
+    r.decided = true;
+    return r;
+  }
+
+ private:
+  // sign_before(kδ) where p' has sign d around kδ: sign p(kδ), or −d at a root.
+  int sign_before(std::int64_t k, int d) const {
+    int s = sign_at(k);
+    return s != 0 ? s : -d;
+  }
+  // The exact sign of p(kδ): a double evaluation with filtered_sign_at's bound, else exact.
+  int sign_at(std::int64_t k) const {
+    int n = p_.degree();
+    if (k > -(std::int64_t{1} << 53) && k < (std::int64_t{1} << 53)) {
+      double x = double(k) * inv_scale_;  // exact
+      double ax = std::fabs(x);
+      double y = approx_.c.back(), bound = std::fabs(approx_.c.back());
+      for (int i = n - 1; i >= 0; --i) {
+        y = y * x + approx_.c[static_cast<std::size_t>(i)];
+        bound = bound * ax + std::fabs(approx_.c[static_cast<std::size_t>(i)]);
+      }
+      double err = (2.0 * n + 2.0) * std::ldexp(bound, -51);  // as in filtered_sign_at (polynomial.cpp)
+      if (std::isfinite(y) && std::isfinite(bound) && bound >= std::ldexp(1.0, -900)) {
+        if (y > err) return 1;
+        if (y < -err) return -1;
+      }
+    }
+    return p_.sign_at(Integer(k), bits_);
+  }
+
+  const Polynomial& p_;
+  const DoubleCoefficients& approx_;
+  int bits_, n_;
+  double inv_scale_;  // 2^−bits
+  Coefficients coeff_{}, deriv_{};
+};
+
+}  // namespace
+
+FailureFilterResult filtered_next_failure(const Polynomial& p, const DoubleCoefficients& approx, int bits,
+                                          std::int64_t a, std::int64_t b) {
+  KMR_CHECK(!p.is_zero(), "filtered_next_failure of the zero polynomial");
+  KMR_CHECK(bits >= 0 && bits <= 62, "filtered_next_failure: lattice bits must be in [0, 62]");
+  return Filter(p, approx, bits).run(a, b);
+}
+
+}  // namespace kmr::poly

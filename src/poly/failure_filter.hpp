@@ -1,0 +1,35 @@
+#pragma once
+// A double-precision filter for the next failure interval of a certificate of any degree (issue 8
+// §3 for degree ≥ 2: the kinetic hull's orient3d cubics), in front of the exact Sturm path.
+//
+// Guarantees (tests/poly/failure_filter_test.cpp):
+//  * filtered_next_failure(p, approx, bits, a, b) either answers nothing (undecided) or answers
+//    exactly what LatticeRootSolver(p, bits).next_failure_after(a·δ, b·δ) answers: the first lattice
+//    interval k in [a, b) with sign_before((k+1)δ) ≠ sign_before(kδ), or none.
+//  * Proof: lattice index ranges [a, b] are subdivided left to right. A range whose enclosure of
+//    p (interval Horner, every operation rounded outward by one ulp, coefficients widened by one ulp
+//    for mpz_get_d's truncation) excludes 0 holds no root, hence no failure. A range whose enclosure
+//    of p' excludes 0 is one where p is strictly monotone: sign_before is then a monotone step
+//    function of the lattice points (sign p, or −sign p' at a root), so the range holds a failure
+//    iff its ends differ, found by bisection on exact signs at lattice points (a double evaluation
+//    with the rigorous bound of filtered_sign_at, else exact). A single lattice interval that
+//    neither test decides (a double root, roots closer than δ, or a bound too wide) makes the
+//    whole query undecided: the caller runs the exact path.
+//  * No GMP number is created unless a lattice sign falls back to exact arithmetic.
+#include <cstdint>
+#include <optional>
+
+#include "poly/polynomial.hpp"
+
+namespace kmr::poly {
+
+struct FailureFilterResult {
+  bool decided = false;
+  std::optional<std::int64_t> failure;  // when decided: the first failure interval in [a, b), if any
+};
+
+// p ≢ 0, approx = double_coefficients(p), 0 ≤ bits ≤ 62, a ≤ b (lattice indices, |a|, |b| < 2^62).
+FailureFilterResult filtered_next_failure(const Polynomial& p, const DoubleCoefficients& approx, int bits,
+                                          std::int64_t a, std::int64_t b);
+
+}  // namespace kmr::poly

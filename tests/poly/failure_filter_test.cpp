@@ -1,0 +1,149 @@
+// The double filter for next failure intervals (poly/failure_filter.hpp) against the exact Sturm
+// path (LatticeRootSolver::next_failure_after), which shares no arithmetic with it beyond the
+// polynomial's coefficients: whenever the filter decides, it decides the same; on random cubics it
+// decides most queries; degenerate cubics (double and triple roots, roots on lattice points, roots
+// closer than δ) are decided the same or left to the exact path.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "poly/failure_filter.hpp"
+#include "poly/sturm.hpp"
+#include "small_polynomial.hpp"
+
+namespace kmr::poly {
+namespace {
+
+using testing::P;
+
+struct Tally {
+  long long decided = 0, undecided = 0;
+};
+
+// Compares the filter with the exact path on [a, b); returns whether the filter decided.
+bool same_decision(const Polynomial& p, int bits, std::int64_t a, std::int64_t b, Tally& t) {
+  FailureFilterResult f = filtered_next_failure(p, double_coefficients(p), bits, a, b);
+  if (!f.decided) {
+    ++t.undecided;
+    return false;
+  }
+  ++t.decided;
+  LatticeRootSolver exact(p, bits);
+  std::optional<Integer> e = exact.next_failure_after(Dyadic(Integer(a), -bits), Dyadic(Integer(b), -bits));
+  EXPECT_EQ(f.failure.has_value(), e.has_value()) << p.to_string() << " bits " << bits << " [" << a << ", " << b << ")";
+  if (f.failure && e) EXPECT_EQ(Integer(*f.failure), *e) << p.to_string() << " bits " << bits << " [" << a << ", " << b << ")";
+  return true;
+}
+
+// scale·(4t − q1)(4t − q2)(4t − q3): roots q_i / 4 (lattice points when bits = 2).
+Polynomial cubic_with_roots(long long q1, long long q2, long long q3, long long scale) {
+  return P({-q1, 4}) * P({-q2, 4}) * P({-q3, 4}) * P({scale});
+}
+
+TEST(FailureFilter, RandomCubicsDecideAsTheExactPath) {
+  std::mt19937_64 rng(8);
+  Tally t;
+  for (int i = 0; i < 3000; ++i) {
+    std::uniform_int_distribution<long long> c(-(1 << 20), 1 << 20);
+    int deg = 1 + static_cast<int>(rng() % 3);
+    std::vector<Integer> coeffs;
+    for (int j = 0; j <= deg; ++j) coeffs.emplace_back(c(rng));
+    Polynomial p(coeffs);
+    if (p.is_zero()) continue;
+    int bits = static_cast<int>(rng() % 12);
+    std::int64_t a = static_cast<std::int64_t>(rng() % 4096) - 2048;
+    std::int64_t b = a + static_cast<std::int64_t>(rng() % (std::int64_t{1} << (10 + rng() % 30)));
+    same_decision(p, bits, a, b, t);
+  }
+  // A filter that never decides would pass the comparisons: it must decide nearly everything here.
+  EXPECT_GT(t.decided, 20 * t.undecided) << t.decided << " decided, " << t.undecided << " undecided";
+}
+
+TEST(FailureFilter, DegenerateCubicsDecideAsTheExactPathOrFallBack) {
+  // Roots at q/4 with bits = 2: q are lattice indices, so roots fall on lattice points; with bits 1
+  // odd q are mid-interval; bits 0 puts several roots in one lattice interval.
+  Tally t;
+  std::mt19937_64 rng(3);
+  for (int i = 0; i < 3000; ++i) {
+    std::uniform_int_distribution<long long> q(-40, 40);
+    long long q1 = q(rng), q2 = rng() % 3 == 0 ? q1 : q(rng), q3 = rng() % 4 == 0 ? q2 : q(rng);
+    long long scale = rng() % 2 ? 1 : -3;
+    Polynomial p = cubic_with_roots(q1, q2, q3, scale);
+    if (rng() % 5 == 0) p = p * P({static_cast<long long>(rng() % 7) + 1, 0, 1});  // a complex pair: degree 5
+    int bits = static_cast<int>(rng() % 5);
+    std::int64_t a = static_cast<std::int64_t>(rng() % 120) - 60;
+    std::int64_t b = a + static_cast<std::int64_t>(rng() % 200);
+    same_decision(p, bits, a, b, t);
+  }
+  EXPECT_GT(t.decided, 0);
+  std::printf("degenerate: %lld decided, %lld left to the exact path\n", t.decided, t.undecided);
+}
+
+TEST(FailureFilter, RootsWithinRoundingOfALatticePointDecideAsTheExactPath) {
+  // (2^e·t − (k·2^(e−b) + d)) · q(t): a root d·2^−e away from the lattice point kδ, with e up to 60,
+  // so the enclosures' rounding (coefficients ≈ 2^60, values far beyond 2^53) decides whether the
+  // filter wrongly excludes the root's range or puts it on the wrong side of kδ.
+  std::mt19937_64 rng(5);
+  Tally t;
+  for (int i = 0; i < 2000; ++i) {
+    int bits = static_cast<int>(rng() % 8), e = bits + 20 + static_cast<int>(rng() % (41 - bits));
+    long long k = static_cast<long long>(rng() % 2000) - 1000, d = static_cast<long long>(rng() % 5) - 2;
+    std::vector<Integer> lin{-(Integer(k) << (e - bits)) - d, Integer(1) << e};
+    Polynomial p(lin);
+    switch (rng() % 3) {
+      case 0: p = p * P({1, 0, 1}); break;                                   // t² + 1
+      case 1: p = p * P({static_cast<long long>(rng() % 100) - 50, 1}); break;  // another simple root
+      default: p = p * P({-3, 0, static_cast<long long>(rng() % 7) + 1}); break;
+    }
+    std::int64_t a = k - static_cast<std::int64_t>(rng() % 3000), b = k + static_cast<std::int64_t>(rng() % 3000);
+    same_decision(p, bits, a, b, t);
+  }
+  EXPECT_GT(t.decided, 10 * t.undecided) << t.decided << " decided, " << t.undecided << " undecided";
+  // Lattice indices near 2^54…2^61 (bits 0): double(k) is rounded, by up to 2^8, so a range's end
+  // can round past a root at k + 1/2 in its last lattice interval; only the widening keeps it in.
+  Tally far;
+  for (int i = 0; i < 2000; ++i) {
+    std::int64_t k = static_cast<std::int64_t>((std::int64_t{1} << (54 + rng() % 7)) + static_cast<std::int64_t>(rng() % 100000));
+    Polynomial p(std::vector<Integer>{-(Integer(2) * k + 1), Integer(2)});
+    if (rng() % 2) p = p * P({1, 0, 1});
+    std::int64_t r = static_cast<std::int64_t>(rng() % 1000);
+    if (rng() % 2) same_decision(p, 0, k - r, k + 1, far);  // the root in the last interval
+    else same_decision(p, 0, k, k + 1 + r, far);             // the root in the first interval
+  }
+  EXPECT_GT(far.decided, 10 * far.undecided) << far.decided << " decided, " << far.undecided << " undecided";
+}
+
+TEST(FailureFilter, HandPickedCases) {
+  Tally t;
+  // A double root at t = 1 (no sign change) and a simple one at t = 3: the failure is interval 3·2^b.
+  Polynomial p = P({-1, 1}) * P({-1, 1}) * P({-3, 1});
+  for (int bits : {0, 1, 4}) {
+    FailureFilterResult f = filtered_next_failure(p, double_coefficients(p), bits, 0, 1000);
+    if (f.decided) {
+      ASSERT_TRUE(f.failure);
+      EXPECT_EQ(*f.failure, 3 << bits);
+    }
+    same_decision(p, bits, 0, 1000, t);
+  }
+  // A root exactly on a lattice point belongs to the interval it starts: t³ − 8 fails in [2, 3).
+  Polynomial q = P({-8, 0, 0, 1});
+  FailureFilterResult f = filtered_next_failure(q, double_coefficients(q), 0, -5, 5);
+  ASSERT_TRUE(f.decided);
+  ASSERT_TRUE(f.failure);
+  EXPECT_EQ(*f.failure, 2);
+  // Starting past the only root: none.
+  f = filtered_next_failure(q, double_coefficients(q), 0, 3, 1 << 20);
+  ASSERT_TRUE(f.decided);
+  EXPECT_FALSE(f.failure);
+  // A constant never fails; an empty range has no failure.
+  f = filtered_next_failure(P({-5}), double_coefficients(P({-5})), 3, 0, 100);
+  EXPECT_TRUE(f.decided && !f.failure);
+  f = filtered_next_failure(q, double_coefficients(q), 0, 2, 2);
+  EXPECT_TRUE(f.decided && !f.failure);
+  // Huge coefficients (beyond 2^1000) are not usable in doubles: undecided, never wrong.
+  Polynomial huge(std::vector<Integer>{Integer(1) << 1100, Integer(-1)});
+  EXPECT_FALSE(filtered_next_failure(huge, double_coefficients(huge), 0, 0, 10).decided);
+}
+
+}  // namespace
+}  // namespace kmr::poly
