@@ -5,8 +5,11 @@
 // closer than δ) are decided the same or left to the exact path.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <limits>
 #include <random>
 
+#include "exact/error.hpp"
 #include "poly/failure_filter.hpp"
 #include "poly/sturm.hpp"
 #include "small_polynomial.hpp"
@@ -31,7 +34,9 @@ bool same_decision(const Polynomial& p, int bits, std::int64_t a, std::int64_t b
   LatticeRootSolver exact(p, bits);
   std::optional<Integer> e = exact.next_failure_after(Dyadic(Integer(a), -bits), Dyadic(Integer(b), -bits));
   EXPECT_EQ(f.failure.has_value(), e.has_value()) << p.to_string() << " bits " << bits << " [" << a << ", " << b << ")";
-  if (f.failure && e) EXPECT_EQ(Integer(*f.failure), *e) << p.to_string() << " bits " << bits << " [" << a << ", " << b << ")";
+  if (f.failure && e) {
+    EXPECT_EQ(Integer(*f.failure), *e) << p.to_string() << " bits " << bits << " [" << a << ", " << b << ")";
+  }
   return true;
 }
 
@@ -143,6 +148,22 @@ TEST(FailureFilter, HandPickedCases) {
   // Huge coefficients (beyond 2^1000) are not usable in doubles: undecided, never wrong.
   Polynomial huge(std::vector<Integer>{Integer(1) << 1100, Integer(-1)});
   EXPECT_FALSE(filtered_next_failure(huge, double_coefficients(huge), 0, 0, 10).decided);
+}
+
+TEST(FailureFilter, ContractViolationsAreRefused) {
+  // The proof needs the range inside |a|, |b| < 2^62 (b − a < 2^63, no signed overflow) and the
+  // double coefficients of p (at least as many as p has coefficients, as filtered_sign_at checks).
+  Polynomial q = P({-8, 0, 0, 1});
+  const std::int64_t big = std::int64_t{1} << 62;
+  EXPECT_THROW((void)filtered_next_failure(q, double_coefficients(q), 0, -big, 5), ContractError);
+  EXPECT_THROW((void)filtered_next_failure(q, double_coefficients(q), 0, 0, big), ContractError);
+  EXPECT_THROW((void)filtered_next_failure(q, double_coefficients(q), 0, std::numeric_limits<std::int64_t>::min(),
+                                           std::numeric_limits<std::int64_t>::max()),
+               ContractError);
+  Polynomial shorter = P({-8, 1});
+  EXPECT_THROW((void)filtered_next_failure(q, double_coefficients(shorter), 0, -5, 5), ContractError);
+  // In range: fine.
+  EXPECT_TRUE(filtered_next_failure(q, double_coefficients(q), 0, -(big - 1), big - 1).decided);
 }
 
 }  // namespace
