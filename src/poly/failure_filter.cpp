@@ -138,6 +138,10 @@ FailureFilterResult filtered_next_failure(const Polynomial& p, const DoubleCoeff
                                           std::int64_t a, std::int64_t b) {
   KMR_CHECK(!p.is_zero(), "filtered_next_failure of the zero polynomial");
   KMR_CHECK(bits >= 0 && bits <= 62, "filtered_next_failure: lattice bits must be in [0, 62]");
+  // |a|, |b| < 2^62: b − a and the ranges' midpoints cannot overflow, and the stack suffices.
+  constexpr std::int64_t kLimit = std::int64_t{1} << 62;
+  KMR_CHECK(a > -kLimit && a < kLimit && b > -kLimit && b < kLimit, "filtered_next_failure: lattice indices beyond 2^62");
+  KMR_CHECK(!approx.usable || approx.c.size() == p.coefficients().size(), "filtered_next_failure: approx is not from p");
   return Filter(p, approx, bits).run(a, b);
 }
 

@@ -28,7 +28,8 @@ struct FailureFilterResult {
   std::optional<std::int64_t> failure;  // when decided: the first failure interval in [a, b), if any
 };
 
-// p ≢ 0, approx = double_coefficients(p), 0 ≤ bits ≤ 62, a ≤ b (lattice indices, |a|, |b| < 2^62).
+// p ≢ 0, approx = double_coefficients(p), 0 ≤ bits ≤ 62, |a|, |b| < 2^62 (lattice indices): checked,
+// ContractError otherwise (approx: its size only). a ≥ b answers decided, no failure.
 FailureFilterResult filtered_next_failure(const Polynomial& p, const DoubleCoefficients& approx, int bits,
                                           std::int64_t a, std::int64_t b);
 

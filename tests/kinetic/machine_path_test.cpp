@@ -175,3 +175,66 @@ TEST(FailureFilterPath, A2_1_CubicCertificatesGiveTheSameBatchesWithAndWithoutTh
   EXPECT_GT(ca.poly_filter_fallbacks, 0);  // double and triple roots ahead go to Sturm
   EXPECT_GT(ca.poly_filter_decided, 0);
 }
+
+// Certificates of degree ≥ 2 created mid-run, at every batch's now: roots exactly at now (simple,
+// double, triple), just before and after it, and random cubics; some removed again. Three
+// simulators: the filter and filtered signs (default), Sturm alone (failure_filter = false), and
+// the exact path throughout (SimulatorOptions{false}: poly::sign_before at creation and in the
+// self-check). The same ids, batches, times and outcomes.
+TEST(FailureFilterPath, A2_1_CertificatesCreatedAtNowGiveTheSameBatchesOnAllThreePaths) {
+  std::mt19937_64 rng(77);
+  auto uniform = [&](std::int64_t lo, std::int64_t hi) { return std::uniform_int_distribution<std::int64_t>(lo, hi)(rng); };
+  const int b = 5;
+  const std::int64_t H = 3000;
+  Dyadic horizon(Integer(H), -b);
+  MotionSimulator fil(b, horizon), stu(b, horizon, SimulatorOptions{true, false}), ex(b, horizon, SimulatorOptions{false});
+  std::vector<CertificateId> live;
+  auto add = [&](const Polynomial& p) {
+    CertificateId i = fil.add(p), j = stu.add(p), k = ex.add(p);
+    ASSERT_EQ(i, j);
+    ASSERT_EQ(i, k);
+    EXPECT_EQ(fil.outcome(i), ex.outcome(i)) << p.to_string() << " at " << ex.now().to_decimal();
+    EXPECT_EQ(stu.outcome(i), ex.outcome(i)) << p.to_string();
+    live.push_back(i);
+  };
+  auto spawn = [&](std::int64_t now_k) {
+    Polynomial at_now = linear(-now_k, std::int64_t{1} << b);  // root exactly at now
+    Polynomial q = linear(-uniform(0, H), std::int64_t{1} << b);
+    Polynomial s = linear(-(now_k << 8) + uniform(-3, 3), std::int64_t{1} << (b + 8));  // within 2^−8 steps of now
+    std::vector<Integer> c;
+    for (int j = 0; j < 4; ++j) c.emplace_back(uniform(-(1 << 16), 1 << 16));
+    c[3] = c[3] == 0 ? Integer(1) : c[3];
+    switch (uniform(0, 5)) {
+      case 0: add(at_now * q); break;
+      case 1: add(at_now * at_now * q); break;
+      case 2: add(at_now * at_now * at_now); break;
+      case 3: add(-(s * q)); break;
+      case 4: add(s * s * at_now); break;
+      default: add(Polynomial(c)); break;
+    }
+  };
+  for (int i = 0; i < 40; ++i) spawn(0);
+  long long batches = 0;
+  for (;;) {
+    auto x = fil.next_batch(horizon), y = stu.next_batch(horizon), z = ex.next_batch(horizon);
+    ASSERT_EQ(x.has_value(), z.has_value());
+    ASSERT_EQ(y.has_value(), z.has_value());
+    if (!z) break;
+    ASSERT_EQ(*x, *z) << "batch " << batches;
+    ASSERT_EQ(*y, *z) << "batch " << batches;
+    ASSERT_EQ(fil.now(), ex.now());
+    for (CertificateId id : *z) EXPECT_EQ(fil.outcome(id), ex.outcome(id));
+    ++batches;
+    std::int64_t now_k = *fil.now_index();
+    for (int j = 0; j < 3; ++j) spawn(now_k);
+    if (live.size() > 60) {
+      std::size_t at = static_cast<std::size_t>(uniform(0, static_cast<std::int64_t>(live.size()) - 1));
+      fil.remove(live[at]), stu.remove(live[at]), ex.remove(live[at]);
+      live.erase(live.begin() + static_cast<std::ptrdiff_t>(at));
+    }
+  }
+  for (CertificateId id : live) EXPECT_EQ(fil.outcome(id), ex.outcome(id));
+  EXPECT_GT(batches, 50);
+  EXPECT_GT(fil.counters().poly_filter_decided, 0);
+  EXPECT_GT(fil.counters().poly_filter_fallbacks, 0);
+}

@@ -5,8 +5,11 @@
 // closer than δ) are decided the same or left to the exact path.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <limits>
 #include <random>
 
+#include "exact/error.hpp"
 #include "poly/failure_filter.hpp"
 #include "poly/sturm.hpp"
 #include "small_polynomial.hpp"
@@ -31,7 +34,9 @@ bool same_decision(const Polynomial& p, int bits, std::int64_t a, std::int64_t b
   LatticeRootSolver exact(p, bits);
   std::optional<Integer> e = exact.next_failure_after(Dyadic(Integer(a), -bits), Dyadic(Integer(b), -bits));
   EXPECT_EQ(f.failure.has_value(), e.has_value()) << p.to_string() << " bits " << bits << " [" << a << ", " << b << ")";
-  if (f.failure && e) EXPECT_EQ(Integer(*f.failure), *e) << p.to_string() << " bits " << bits << " [" << a << ", " << b << ")";
+  if (f.failure && e) {
+    EXPECT_EQ(Integer(*f.failure), *e) << p.to_string() << " bits " << bits << " [" << a << ", " << b << ")";
+  }
   return true;
 }
 
@@ -143,6 +148,84 @@ TEST(FailureFilter, HandPickedCases) {
   // Huge coefficients (beyond 2^1000) are not usable in doubles: undecided, never wrong.
   Polynomial huge(std::vector<Integer>{Integer(1) << 1100, Integer(-1)});
   EXPECT_FALSE(filtered_next_failure(huge, double_coefficients(huge), 0, 0, 10).decided);
+}
+
+TEST(FailureFilter, ProductsOfNearLatticeRootsAndNearCapCoefficientsDecideAsTheExactPath) {
+  // Up to 6 linear factors (2^e·t − (k'·2^(e−b) + d)), some squared, times a complex pair, with
+  // k' within 30 lattice steps of a centre k (|k| up to 2^8…2^61), δ = 2^0…2^−62, and sometimes
+  // scaled to coefficients just below 2^1000 (the cap of double_coefficients): enclosures near
+  // overflow and far beyond 2^53, roots on, within rounding of and within one step of lattice points.
+  for (int kbmax : {8, 16, 30, 62}) {
+    std::mt19937_64 rng(12345 + static_cast<unsigned>(kbmax));
+    Tally t;
+    for (int i = 0; i < 4000; ++i) {
+      int bits = static_cast<int>(rng() % 63);
+      bool on_lattice = rng() % 6 == 0, near_cap = rng() % 6 == 0;
+      std::int64_t k = static_cast<std::int64_t>(rng() % (std::uint64_t{1} << (rng() % static_cast<unsigned>(kbmax))));
+      if (rng() % 2) k = -k;
+      int factors = 1 + static_cast<int>(rng() % 6);
+      Polynomial p(1);
+      for (int j = 0; j < factors; ++j) {
+        int e = bits + static_cast<int>(rng() % 20);
+        std::int64_t off = static_cast<std::int64_t>(rng() % 61) - 30;
+        long long d = on_lattice ? 0 : static_cast<long long>(rng() % 7) - 3;
+        Integer num = (Integer(k + off) << static_cast<unsigned>(e - bits)) + Integer(d);
+        Polynomial f(std::vector<Integer>{-num, Integer(1) << static_cast<unsigned>(e)});
+        p = p * f;
+        if (rng() % 4 == 0) p = p * f;
+      }
+      if (rng() % 3 == 0) p = p * P({static_cast<long long>(rng() % 7) + 1, 0, 1});
+      if (near_cap) {
+        std::int64_t top = 0;
+        for (const auto& c : p.coefficients()) top = std::max(top, exact::bit_length(c));
+        if (top < 1000) p = Polynomial(Integer(1) << static_cast<unsigned>(1000 - top - static_cast<std::int64_t>(rng() % 3))) * p;
+      }
+      if (p.degree() > 15) continue;
+      const std::int64_t lim = (std::int64_t{1} << 62) - 1;
+      std::int64_t a = std::max(-lim, k - static_cast<std::int64_t>(rng() % 80));
+      std::int64_t b = std::min(lim, k + static_cast<std::int64_t>(rng() % 64));
+      if (rng() % 4 == 0) b = std::min(lim, k + static_cast<std::int64_t>(rng() >> 3));
+      if (a > b) std::swap(a, b);
+      same_decision(p, bits, a, b, t);
+    }
+    EXPECT_GT(t.decided, 0);
+    std::printf("indices to 2^%d: %lld decided, %lld left to the exact path\n", kbmax, t.decided, t.undecided);
+  }
+  // Two simple roots 1…2000 steps of 2^−e apart, maybe a third, scaled to coefficients near 2^1000.
+  std::mt19937_64 rng(99);
+  Tally t;
+  for (int i = 0; i < 5000; ++i) {
+    int bits = static_cast<int>(rng() % 63), e = bits + static_cast<int>(rng() % 40);
+    std::int64_t k = static_cast<std::int64_t>(rng() % 4096) - 2048;
+    Integer num = (Integer(k) << static_cast<unsigned>(e - bits)) + Integer(static_cast<long long>(rng() % 5) - 2);
+    Integer gap(static_cast<long long>(rng() % 2000) + 1);
+    Polynomial p = Polynomial(std::vector<Integer>{-num, Integer(1) << static_cast<unsigned>(e)}) *
+                   Polynomial(std::vector<Integer>{-(num + gap), Integer(1) << static_cast<unsigned>(e)});
+    if (rng() % 2) p = p * P({-1 - static_cast<long long>(rng() % 100), 1});
+    std::int64_t top = 0;
+    for (const auto& c : p.coefficients()) top = std::max(top, exact::bit_length(c));
+    p = Polynomial((Integer(1) << static_cast<unsigned>(1000 - top)) - Integer(static_cast<long long>(rng() % 3))) * p;
+    if (rng() % 2) p = -p;
+    std::int64_t a = k - static_cast<std::int64_t>(rng() % 100), b = k + static_cast<std::int64_t>(rng() % 3000);
+    same_decision(p, bits, a, b, t);
+  }
+  EXPECT_GT(t.decided, t.undecided / 4) << t.decided << " decided, " << t.undecided << " undecided";
+}
+
+TEST(FailureFilter, ContractViolationsAreRefused) {
+  // The proof needs the range inside |a|, |b| < 2^62 (b − a < 2^63, no signed overflow) and the
+  // double coefficients of p (at least as many as p has coefficients, as filtered_sign_at checks).
+  Polynomial q = P({-8, 0, 0, 1});
+  const std::int64_t big = std::int64_t{1} << 62;
+  EXPECT_THROW((void)filtered_next_failure(q, double_coefficients(q), 0, -big, 5), ContractError);
+  EXPECT_THROW((void)filtered_next_failure(q, double_coefficients(q), 0, 0, big), ContractError);
+  EXPECT_THROW((void)filtered_next_failure(q, double_coefficients(q), 0, std::numeric_limits<std::int64_t>::min(),
+                                           std::numeric_limits<std::int64_t>::max()),
+               ContractError);
+  Polynomial shorter = P({-8, 1});
+  EXPECT_THROW((void)filtered_next_failure(q, double_coefficients(shorter), 0, -5, 5), ContractError);
+  // In range: fine.
+  EXPECT_TRUE(filtered_next_failure(q, double_coefficients(q), 0, -(big - 1), big - 1).decided);
 }
 
 }  // namespace
