@@ -5,7 +5,11 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
+#include <memory>
 #include <string>
+
+#include <rapidcheck/state.h>
 
 #include "exact/error.hpp"
 #include "hull/hull_at_time.hpp"
@@ -89,4 +93,129 @@ RC_GTEST_PROP(KineticHullProperties, C2_2_EveryBatchMatchesStaticAndScratch, ())
     RC_TAG("refused");
     RC_ASSERT(legitimate_refusal(e.what()));
   }
+}
+
+// ---- integrated changes (§2.4) as an rc::state machine -------------------------------------------
+namespace {
+
+struct Model {
+  int n = 0;
+  std::vector<bool> present;
+};
+
+struct Sut {
+  std::vector<MovingPoint> initial;
+  std::uint64_t seed = 1;
+  Dyadic until{16};
+  std::unique_ptr<kmr::kinetic::MotionSimulator> sim;
+  std::unique_ptr<KineticHull> kh;
+  bool refused = false;  // a legitimate InputError ended the run
+  void judge() const {
+    const auto& pts = kh->points();
+    const auto& present = kh->present();
+    const auto facets = kh->facets();
+    RC_ASSERT(facets == kmr::hull::static_hull_before(pts, sim->now(), seed, present));
+    RC_ASSERT(kmr::hull::hull_certificate_failure(pts, sim->now(), facets, present) == std::string());
+    KineticHull scratch(pts, sim->now(), seed, present);
+    RC_ASSERT(kh->signature() == scratch.signature());
+    RC_ASSERT(kh->certificate_keys() == scratch.certificate_keys());
+    RC_ASSERT(kh->live_certificates() == static_cast<std::size_t>(sim->counters().live()));
+  }
+  template <class F>
+  void act(F&& f) {
+    if (refused) return;
+    try {
+      f();
+    } catch (const kmr::InputError& e) {
+      RC_ASSERT(legitimate_refusal(e.what()));
+      refused = true;
+      return;
+    }
+    judge();
+  }
+};
+
+using Cmd = rc::state::Command<Model, Sut>;
+
+struct Advance : Cmd {
+  void run(const Model&, Sut& s) const override {
+    s.act([&] {
+      if (auto batch = s.sim->next_batch(s.until)) s.kh->update(*batch);
+    });
+  }
+  void show(std::ostream& os) const override { os << "advance one batch"; }
+};
+
+struct ThreeQuarters : Cmd {
+  int x;
+  explicit ThreeQuarters(const Model& m) : x(*rc::gen::inRange(0, m.n)) {}
+  void run(const Model&, Sut& s) const override {
+    s.act([&] { s.kh->change_motion(x, kmr::hull::three_quarters(s.kh->points()[x])); });
+  }
+  void show(std::ostream& os) const override { os << "motion of " << x << " becomes 3/4 r(t)"; }
+};
+
+struct NewMotion : Cmd {
+  int x;
+  long long v[3];
+  explicit NewMotion(const Model& m) : x(*rc::gen::inRange(0, m.n)) {
+    for (auto& c : v) c = *rc::gen::inRange(-12, 13);
+  }
+  void run(const Model&, Sut& s) const override {
+    s.act([&] {
+      MovingPoint r = s.kh->points()[x];
+      // The same start, a new velocity (the point jumps to its new trajectory now).
+      MovingPoint q;
+      for (int k = 0; k < 3; ++k) q[k] = Polynomial(std::vector<Integer>{r[k].is_zero() ? Integer(0) : r[k][0], Integer(v[k])});
+      s.kh->change_motion(x, q);
+    });
+  }
+  void show(std::ostream& os) const override { os << "point " << x << " gets velocity (" << v[0] << ", " << v[1] << ", " << v[2] << ")"; }
+};
+
+struct Remove : Cmd {
+  int x;
+  explicit Remove(const Model& m) : x(*rc::gen::inRange(0, m.n)) {}
+  void checkPreconditions(const Model& m) const override {
+    RC_PRE(m.present[x]);
+    RC_PRE(std::count(m.present.begin(), m.present.end(), true) > 5);
+  }
+  void apply(Model& m) const override { m.present[x] = false; }
+  void run(const Model&, Sut& s) const override { s.act([&] { s.kh->remove_point(x); }); }
+  void show(std::ostream& os) const override { os << "remove " << x; }
+};
+
+struct Insert : Cmd {
+  int x;
+  explicit Insert(const Model& m) : x(*rc::gen::inRange(0, m.n)) {}
+  void checkPreconditions(const Model& m) const override { RC_PRE(!m.present[x]); }
+  void apply(Model& m) const override { m.present[x] = true; }
+  void run(const Model&, Sut& s) const override { s.act([&] { s.kh->insert_point(x); }); }
+  void show(std::ostream& os) const override { os << "insert " << x; }
+};
+
+}  // namespace
+
+RC_GTEST_PROP(KineticHullProperties, IntegratedChangesKeepEveryJudge, ()) {
+  Sut s;
+  s.initial = *motions();
+  s.seed = *rc::gen::inRange(1, 1000);
+  const int n = static_cast<int>(s.initial.size());
+  Model m;
+  m.n = n;
+  m.present.assign(n, true);
+  for (int i = 0; i < n; ++i)
+    if (i % 5 == 4) m.present[i] = false;  // some points wait to be inserted
+  s.sim = std::make_unique<kmr::kinetic::MotionSimulator>(*rc::gen::inRange(0, 4), s.until);
+  try {
+    s.kh = std::make_unique<KineticHull>(s.initial, *s.sim, s.seed, m.present);
+  } catch (const kmr::InputError& e) {
+    RC_TAG("refused at the start");
+    RC_ASSERT(legitimate_refusal(e.what()));
+    return;
+  }
+  s.judge();
+  rc::state::check(m, s, rc::state::gen::execOneOfWithArgs<Advance, Advance, ThreeQuarters, NewMotion, Remove, Insert>());
+  RC_CLASSIFY(s.refused, "refused during the run");
+  RC_CLASSIFY(s.kh->counters().rebuilds > 0, "a new tetrahedron");
 }

@@ -49,10 +49,12 @@ class TrajectoryKernel {
 }  // namespace
 
 std::vector<std::array<int, 3>> static_hull_before(const std::vector<MovingPoint>& pts, const exact::Dyadic& t,
-                                                   std::uint64_t seed) {
+                                                   std::uint64_t seed, const std::vector<bool>& present) {
   refuse_identical_trajectories(pts);
   const int n = static_cast<int>(pts.size());
-  const std::vector<int> order = priority_order(random_priorities(n, seed));
+  std::vector<int> order;
+  for (int x : priority_order(random_priorities(n, seed)))
+    if (present.empty() || present[x]) order.push_back(x);
   const auto [a, b0, c0, d] = initial_simplex_of(pts, order);
   int b = b0, c = c0;
   TrajectoryKernel k(pts, t);
@@ -86,7 +88,7 @@ std::vector<std::array<int, 3>> static_hull_before(const std::vector<MovingPoint
 }
 
 std::string hull_certificate_failure(const std::vector<MovingPoint>& pts, const exact::Dyadic& t,
-                                     const std::vector<std::array<int, 3>>& facets) {
+                                     const std::vector<std::array<int, 3>>& facets, const std::vector<bool>& present) {
   auto name = [](const std::array<int, 3>& f) {
     return "(" + std::to_string(f[0]) + ", " + std::to_string(f[1]) + ", " + std::to_string(f[2]) + ")";
   };
@@ -102,7 +104,7 @@ std::string hull_certificate_failure(const std::vector<MovingPoint>& pts, const 
   const int n = static_cast<int>(pts.size());
   for (const auto& f : facets)
     for (int x = 0; x < n; ++x) {
-      if (x == f[0] || x == f[1] || x == f[2]) continue;
+      if (x == f[0] || x == f[1] || x == f[2] || (!present.empty() && !present[x])) continue;
       const poly::Polynomial p = orientation_polynomial(pts[f[0]], pts[f[1]], pts[f[2]], pts[x]);
       if (p.is_zero()) return "point " + std::to_string(x) + " stays on the plane of facet " + name(f);
       if (poly::sign_before(p, t) > 0) return "point " + std::to_string(x) + " lies outside facet " + name(f);

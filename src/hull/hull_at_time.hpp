@@ -23,10 +23,12 @@
 
 namespace kmr::hull {
 
+// `present` (empty: all) restricts both to a subset of the points (integrated changes).
 std::vector<std::array<int, 3>> static_hull_before(const std::vector<MovingPoint>& points, const exact::Dyadic& t,
-                                                   std::uint64_t seed = 2012);
+                                                   std::uint64_t seed = 2012, const std::vector<bool>& present = {});
 
 std::string hull_certificate_failure(const std::vector<MovingPoint>& points, const exact::Dyadic& t,
-                                     const std::vector<std::array<int, 3>>& facets);
+                                     const std::vector<std::array<int, 3>>& facets,
+                                     const std::vector<bool>& present = {});
 
 }  // namespace kmr::hull

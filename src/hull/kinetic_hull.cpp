@@ -249,21 +249,32 @@ const Label& label_of(KH::Test t) {
 
 }  // namespace
 
-KineticHull::KineticHull(std::vector<MovingPoint> points, kinetic::MotionSimulator& sim, std::uint64_t seed)
-    : pts_(std::move(points)), sim_(&sim), t_(sim.now()) {
-  refuse_identical_trajectories(pts_);
+KineticHull::KineticHull(std::vector<MovingPoint> points, kinetic::MotionSimulator& sim, std::uint64_t seed,
+                         std::vector<bool> present)
+    : pts_(std::move(points)), sim_(&sim), t_(sim.now()), present_(std::move(present)) {
   order_ = priority_order(random_priorities(static_cast<int>(pts_.size()), seed));
-  simplex_ = initial_simplex_of(pts_, order_);
-  centre_sum_ = trajectory_sum(pts_[simplex_[0]], pts_[simplex_[1]], pts_[simplex_[2]], pts_[simplex_[3]]);
-  run();
+  start();
 }
 
-KineticHull::KineticHull(std::vector<MovingPoint> points, const exact::Dyadic& t, std::uint64_t seed)
-    : pts_(std::move(points)), t_(t) {
-  refuse_identical_trajectories(pts_);
+KineticHull::KineticHull(std::vector<MovingPoint> points, const exact::Dyadic& t, std::uint64_t seed,
+                         std::vector<bool> present)
+    : pts_(std::move(points)), t_(t), present_(std::move(present)) {
   order_ = priority_order(random_priorities(static_cast<int>(pts_.size()), seed));
-  simplex_ = initial_simplex_of(pts_, order_);
+  start();
+}
+
+void KineticHull::start() {
+  if (present_.empty()) present_.assign(pts_.size(), true);
+  KMR_CHECK(present_.size() == pts_.size(), "KineticHull: one presence flag per point");
+  std::vector<int> live_order;
+  for (int x : order_)
+    if (present_[x]) live_order.push_back(x);
+  refuse_identical_trajectories(pts_);
+  simplex_ = initial_simplex_of(pts_, live_order);
   centre_sum_ = trajectory_sum(pts_[simplex_[0]], pts_[simplex_[1]], pts_[simplex_[2]], pts_[simplex_[3]]);
+  if (present_box_.empty())
+    for (std::size_t x = 0; x < pts_.size(); ++x)
+      present_box_.push_back(rt_.input<bool>(sac::Label("hull.present"), x, present_[x]));
   run();
 }
 
@@ -283,8 +294,10 @@ void KineticHull::run() {
                [kh = this, roots, a, b, c, d](int side) { initial_hull(kh, roots, a, b, c, d, side); });
       for (int x : order_) {
         if (x == a || x == b || x == c || x == d) continue;
-        // insertVertex x: findAssociatedFace, then rip and tent.
-        rt_.read(roots, [kh = this, x](const Roots& r) { locate_root(kh, r, 0, 0, x); });
+        // insertVertex x (if x is in the set): findAssociatedFace, then rip and tent.
+        rt_.read(present_box_[x], [kh = this, roots, x](bool on) {
+          if (on) kh->rt().read(roots, [kh, x](const Roots& r) { locate_root(kh, r, 0, 0, x); });
+        });
       }
     });
   });
@@ -297,10 +310,124 @@ void KineticHull::update(const std::vector<kinetic::CertificateId>& batch) {
     KMR_CHECK(k != by_sim_.end(), "kinetic hull: a batch names a certificate the hull does not own");
     rt_.change(certs_.at(k->second).cert, sim_->outcome(id));
   }
-  t_ = sim_->now();
+  propagate();
+}
+
+void KineticHull::propagate() {
+  if (sim_) t_ = sim_->now();
   sac::with_stack(kStack, [this] { rt_.propagate(); });
   ++counters_.propagations;
 }
+
+void KineticHull::index_certificate(const CertificateKey& key, bool add) {
+  for (int i = 1; i < 5; ++i) {
+    if (key[i] < 0) continue;
+    auto& v = by_point_[key[i]];
+    if (add) v.push_back(key);
+    else v.erase(std::find(v.begin(), v.end(), key));
+  }
+}
+
+// §2.4's motion change: every live certificate whose polynomial involves x (all centre tests and
+// the tetrahedron's orientation too if x is one of its points, since the centre moves with them)
+// gets its new polynomial: the simulator's certificate is replaced and the traceable takes the new
+// polynomial's sign just before now; then one propagation repairs the trace.
+void KineticHull::change_motion(int x, MovingPoint r) {
+  KMR_CHECK(x >= 0 && x < static_cast<int>(pts_.size()), "change_motion: no such point");
+  for (std::size_t y = 0; y < pts_.size(); ++y)
+    if (static_cast<int>(y) != x && pts_[y] == r)
+      throw InputError("points " + std::to_string(std::min<int>(x, y)) + " and " + std::to_string(std::max<int>(x, y)) +
+                       " would have identical trajectories after the motion change");
+  const std::array<int, 4> before = simplex_;
+  MovingPoint old = pts_[x];
+  const MovingPoint old_sum = centre_sum_;
+  pts_[x] = std::move(r);
+  auto restore = [&] {
+    pts_[x] = old;
+    centre_sum_ = old_sum;
+  };
+  std::vector<int> live_order;
+  for (int y : order_)
+    if (present_[y]) live_order.push_back(y);
+  std::array<int, 4> after;
+  try {
+    after = initial_simplex_of(pts_, live_order);
+  } catch (const InputError&) {
+    restore();
+    throw;
+  }
+  ++counters_.integrated_changes;
+  if (after != before) {  // an identical degeneracy appeared or went: a new tetrahedron
+    ++counters_.rebuilds;
+    rt_.reset();
+    start();
+    return;
+  }
+  const bool centre = std::count(before.begin(), before.end(), x) > 0;
+  if (centre) centre_sum_ = trajectory_sum(pts_[before[0]], pts_[before[1]], pts_[before[2]], pts_[before[3]]);
+  std::vector<CertificateKey> affected;
+  if (centre)
+    for (const auto& [key, reg] : certs_)
+      if (key[0] != static_cast<int>(Test::visible)) affected.push_back(key);
+  if (auto it = by_point_.find(x); it != by_point_.end())
+    affected.insert(affected.end(), it->second.begin(), it->second.end());
+  std::sort(affected.begin(), affected.end());
+  affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
+  std::vector<Polynomial> polys;  // all computed first: a refused change changes nothing
+  for (const CertificateKey& key : affected) {
+    const Test test = static_cast<Test>(key[0]);
+    polys.push_back(polynomial(test, key[1], key[2], key[3], key[4]));
+    if (polys.back().is_zero()) {
+      restore();
+      --counters_.integrated_changes;
+      throw InputError(describe(test, key[1], key[2], key[3], key[4]) + " (after the motion change)");
+    }
+  }
+  for (std::size_t i = 0; i < affected.size(); ++i) {
+    Registration& reg = certs_.at(affected[i]);
+    int outcome;
+    if (sim_) {
+      sim_->remove(reg.sim);
+      by_sim_.erase(reg.sim);
+      reg.sim = sim_->add(polys[i]);
+      by_sim_.emplace(reg.sim, affected[i]);
+      ++counters_.certificates_created;
+      outcome = sim_->outcome(reg.sim);
+    } else {
+      outcome = poly::sign_before(polys[i], t_);
+    }
+    rt_.change(reg.cert, outcome);
+  }
+  propagate();
+}
+
+void KineticHull::set_present(int x, bool on) {
+  KMR_CHECK(x >= 0 && x < static_cast<int>(pts_.size()), "insert/remove: no such point");
+  if (present_[x] == on) return;
+  ++counters_.integrated_changes;
+  present_[x] = on;
+  std::vector<int> live_order;
+  for (int y : order_)
+    if (present_[y]) live_order.push_back(y);
+  std::array<int, 4> now_simplex;
+  try {
+    now_simplex = initial_simplex_of(pts_, live_order);
+  } catch (const InputError&) {
+    present_[x] = !on;
+    throw;
+  }
+  rt_.change(present_box_[x], on);
+  if (now_simplex != simplex_) {
+    ++counters_.rebuilds;
+    rt_.reset();
+    start();
+    return;
+  }
+  propagate();
+}
+
+void KineticHull::remove_point(int x) { set_present(x, false); }
+void KineticHull::insert_point(int x) { set_present(x, true); }
 
 Polynomial KineticHull::polynomial(Test test, int a, int b, int c, int d) const {
   switch (test) {
@@ -347,6 +474,7 @@ sac::Mod<int>* KineticHull::certificate(Test test, int a, int b, int c, int d) {
     it->second.hook = hook;
   } else {
     certs_.emplace(key, Registration{m, hook, sid});
+    index_certificate(key, true);
     if (sim_) by_sim_.emplace(sid, key);
   }
   return m;
@@ -359,6 +487,7 @@ void KineticHull::certificate_discarded(const CertificateKey& key, sac::HookId s
     sim_->remove(it->second.sim);
     by_sim_.erase(it->second.sim);
   }
+  index_certificate(key, false);
   certs_.erase(it);
 }
 

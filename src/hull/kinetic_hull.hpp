@@ -17,7 +17,14 @@
 //  * Refused with an InputError naming the points: identical trajectories, fewer than four points
 //    that are not identically coplanar, and any certificate that is identically zero (e.g. four
 //    points that stay coplanar for all time).
-//  * Deterministic: a pure function of (trajectories, seed, the simulator's batches).
+//  * Integrated changes (§2.4) keep all of the above: change_motion(x, r), remove_point(x) and
+//    insert_point(x) act between batches, each followed by one propagation. The points that may
+//    ever take part are given at construction (`present` says which do at first, default all);
+//    their priorities are fixed, so an insertion takes its place in the priority order.
+//    A change that alters the initial tetrahedron (one of its points removed, a point of higher
+//    priority inserted, or an identical degeneracy appearing) rebuilds the run from scratch.
+//  * Deterministic: a pure function of (trajectories, seed, presence, the simulator's batches, the
+//    integrated changes).
 #include <array>
 #include <cstdint>
 #include <map>
@@ -36,15 +43,19 @@ namespace kmr::hull {
 struct KineticCounters {
   long long certificates_created = 0;  // certificates added to the simulator over the whole run
   long long propagations = 0;
+  long long integrated_changes = 0;
+  long long rebuilds = 0;  // integrated changes that altered the initial tetrahedron
 };
 
 class KineticHull {
  public:
   // The kinetic run: certificates are created in `sim` (its now() is the run's time).
-  KineticHull(std::vector<MovingPoint> points, kinetic::MotionSimulator& sim, std::uint64_t seed = 2012);
+  KineticHull(std::vector<MovingPoint> points, kinetic::MotionSimulator& sim, std::uint64_t seed = 2012,
+              std::vector<bool> present = {});
   // A from-scratch self-adjusting run at time t without a simulator (outcomes: signs just before t);
   // the reference of the stability and compactness checks.
-  KineticHull(std::vector<MovingPoint> points, const exact::Dyadic& t, std::uint64_t seed = 2012);
+  KineticHull(std::vector<MovingPoint> points, const exact::Dyadic& t, std::uint64_t seed = 2012,
+              std::vector<bool> present = {});
   ~KineticHull();
   KineticHull(const KineticHull&) = delete;
   KineticHull& operator=(const KineticHull&) = delete;
@@ -60,6 +71,12 @@ class KineticHull {
       after_batch();
     }
   }
+
+  // Integrated changes (outside batches): the motion of x becomes r; x leaves or joins the set.
+  void change_motion(int x, MovingPoint r);
+  void remove_point(int x);
+  void insert_point(int x);
+  const std::vector<bool>& present() const { return present_; }
 
   std::vector<std::array<int, 3>> facets() const;  // alive faces, kmr hull's format
   std::vector<int> vertices() const;
@@ -101,6 +118,10 @@ class KineticHull {
 
  private:
   void run();
+  void start();                           // chooses the tetrahedron and centre, then run()
+  void propagate();
+  void set_present(int x, bool on);
+  void index_certificate(const CertificateKey& key, bool add);
   Polynomial polynomial(Test test, int a, int b, int c, int d) const;
   std::string describe(Test test, int a, int b, int c, int d) const;
 
@@ -113,6 +134,9 @@ class KineticHull {
   kinetic::MotionSimulator* sim_ = nullptr;  // null: a from-scratch reference at time t_
   exact::Dyadic t_;
   std::vector<int> order_;
+  std::vector<bool> present_;
+  std::vector<sac::Mod<bool>*> present_box_;                          // inputs, one per point
+  std::map<int, std::vector<CertificateKey>> by_point_;              // point → its live certificates
   std::array<int, 4> simplex_{};
   MovingPoint centre_sum_;
   sac::Runtime rt_;

@@ -105,6 +105,16 @@ std::array<int, 4> initial_simplex_of(const std::vector<MovingPoint>& pts, const
   return {a, b, c, order[i]};
 }
 
+MovingPoint three_quarters(const MovingPoint& r) {
+  MovingPoint out;
+  for (int k = 0; k < 3; ++k) {
+    std::vector<exact::Integer> c;
+    for (const exact::Integer& a : r[k].coefficients()) c.push_back(exact::Integer(3) * a / 4);
+    out[k] = Polynomial(c);
+  }
+  return out;
+}
+
 std::array<exact::Dyadic, 3> position_at(const MovingPoint& p, const exact::Dyadic& t) {
   std::array<exact::Dyadic, 3> r;
   for (int k = 0; k < 3; ++k) {

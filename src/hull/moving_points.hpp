@@ -41,9 +41,11 @@ MovingPoint trajectory_sum(const MovingPoint& a, const MovingPoint& b, const Mov
 void refuse_identical_trajectories(const std::vector<MovingPoint>& points);
 std::array<int, 4> initial_simplex_of(const std::vector<MovingPoint>& points, const std::vector<int>& order);
 
-// The trajectory scaled in time: r(t) ↦ k·r(t) for k = num/2^shift is not integral; §2.4's
-// ¾·r(t) is kept integral by the caller scaling all points (see kinetic_hull.hpp). Evaluates a
-// moving point at a dyadic time (exact).
+// §2.4's integrated motion change r(t) ↦ ¾·r(t), kept an integer motion: every coefficient c
+// becomes 3c/4 truncated toward zero (exactly ¾·r(t) when the coefficients are multiples of 4).
+MovingPoint three_quarters(const MovingPoint& r);
+
+// A moving point's position at a dyadic time (exact).
 std::array<exact::Dyadic, 3> position_at(const MovingPoint& p, const exact::Dyadic& t);
 
 }  // namespace kmr::hull
