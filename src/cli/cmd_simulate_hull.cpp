@@ -15,7 +15,7 @@ int simulate_hull_command(const Argv& argv) {
   Args args(argv, {"until", "lattice-bits", "check-every", "stats"}, {"integrated"});
   if (args.help() || args.positional().size() < 2) {
     std::cout
-        << "usage: kmr simulate hull FILE [--until T] [--lattice-bits B] [--check-every K] [--stats FILE]\n"
+        << "usage: kmr simulate hull FILE [--until T] [--lattice-bits B] [--check-every K] [--integrated] [--stats FILE]\n"
            "FILE has one point per line, 'x y z vx vy vz' (decimal integers): position (x, y, z) + (vx, vy, vz)·t\n"
            "('#' comments). Simulates the kinetic convex hull (thesis §2.2, Appendix A, run as a self-adjusting\n"
            "program) from time 0 to T (a decimal dyadic, a multiple of δ = 2^-B; default T = 2^27, B = 10),\n"
@@ -24,13 +24,13 @@ int simulate_hull_command(const Argv& argv) {
            "certificates_created, integrated_changes, and vertices/facets of the hull just before T in the\n"
            "format of `kmr hull`. --check-every K compares the hull with the exact static hull after every K-th\n"
            "batch (K = 1: all) and exits 1 on a difference. --stats FILE writes timings and trace counts.\n"
-           "--integrated (insertions, deletions, motion changes during the run) is not implemented yet.\n";
+           "--integrated runs §2.4's integrated experiment: after each batch, for each of its events, the motion\n"
+           "r(t) of the next point in input order becomes ¾·r(t) (coefficients 3c/4 rounded toward zero), each\n"
+           "change followed by one propagation, until every point has been changed once.\n";
     return args.help() ? 0 : 2;
   }
   const auto& pos = args.positional();
   if (pos.size() != 2) throw InputError("kmr simulate hull takes exactly one FILE");
-  if (args.has("integrated"))
-    throw InputError("--integrated is not implemented yet (issue 9 part 4); run without it");
   int bits = static_cast<int>(args.integer("lattice-bits", 10, 0, 62));
   long long check_every = args.integer("check-every", 0, 0, 1LL << 62);
   exact::Dyadic until = args.value("until") ? exact::Dyadic::parse(*args.value("until")) : exact::Dyadic::pow2(27);
@@ -52,13 +52,15 @@ int simulate_hull_command(const Argv& argv) {
   auto start = clock::now();
   hull::KineticHull kh(points, sim);
   const double initial_seconds = seconds(start);
-  double propagate_seconds = 0, check_seconds = 0;
+  double propagate_seconds = 0, check_seconds = 0, integrated_seconds = 0;
+  const bool integrated = args.has("integrated");
+  std::size_t next_change = 0;  // the next point whose motion changes (input order)
   long long checks = 0;
   auto check = [&](long long batch) {
     auto c = clock::now();
     auto facets = kh.facets();
-    auto expected = hull::static_hull_before(points, sim.now());
-    std::string failure = facets == expected ? hull::hull_certificate_failure(points, sim.now(), facets)
+    auto expected = hull::static_hull_before(kh.points(), sim.now());
+    std::string failure = facets == expected ? hull::hull_certificate_failure(kh.points(), sim.now(), facets)
                                              : std::string("differs from the exact static hull");
     check_seconds += seconds(c);
     ++checks;
@@ -75,6 +77,12 @@ int simulate_hull_command(const Argv& argv) {
     auto p = clock::now();
     kh.update(*b);
     propagate_seconds += seconds(p);
+    if (integrated) {
+      auto q = clock::now();
+      for (std::size_t e = 0; e < b->size() && next_change < points.size(); ++e, ++next_change)
+        kh.change_motion(static_cast<int>(next_change), hull::three_quarters(kh.points()[next_change]));
+      integrated_seconds += seconds(q);
+    }
     ++batch;
     if (check_every > 0 && batch % check_every == 0 && !check(batch)) return 1;
   }
@@ -90,7 +98,7 @@ int simulate_hull_command(const Argv& argv) {
   }
   std::cout << "}, \"certificates\": " << kh.live_certificates()
             << ", \"certificates_created\": " << kh.counters().certificates_created
-            << ", \"integrated_changes\": 0, \"checks\": " << checks << ", \"vertices\": [";
+            << ", \"integrated_changes\": " << kh.counters().integrated_changes << ", \"checks\": " << checks << ", \"vertices\": [";
   for (std::size_t i = 0; i < vertices.size(); ++i) std::cout << (i ? ", " : "") << vertices[i];
   std::cout << "], \"facets\": [";
   for (std::size_t i = 0; i < facets.size(); ++i)
@@ -99,6 +107,7 @@ int simulate_hull_command(const Argv& argv) {
   if (stats.is_open()) {
     const sac::Stats s = kh.runtime().stats();
     stats << "{\"initial_run_seconds\": " << initial_seconds << ", \"propagation_seconds\": " << propagate_seconds
+          << ", \"integrated_seconds\": " << integrated_seconds << ", \"rebuilds\": " << kh.counters().rebuilds
           << ", \"check_seconds\": " << check_seconds << ", \"checks\": " << checks
           << ", \"trace_nodes\": " << s.trace_nodes << ", \"reads_reexecuted\": " << s.reads_reexecuted
           << ", \"allocs_reused\": " << s.allocs_reused << ", \"nodes_discarded\": " << s.nodes_discarded

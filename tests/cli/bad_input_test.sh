@@ -167,7 +167,6 @@ expect_error hull-dup "points 0 and 4 have identical trajectories" -- simulate h
 expect_error hull-flat "stay coplanar for all time" -- simulate hull "$f/h_flat"
 expect_error hull-coplanar4 "points 0, 1, 2 and 3 stay coplanar for all time" -- simulate hull "$f/h_coplanar4" --until 1
 expect_error hull-until-offlattice "is not a multiple of the lattice step" -- simulate hull "$f/h" --until 0.5 --lattice-bits 0
-expect_error hull-integrated "--integrated is not implemented yet" -- simulate hull "$f/h" --integrated
 expect_error roots-empty-window "empty window" -- roots --from 2 --to 2 -- 1 1
 expect_error roots-zero "zero polynomial" -- roots -- 0 0 0
 expect_error roots-no-coefs "no coefficients" -- roots --
