@@ -320,8 +320,13 @@ const std::vector<Timing>& timings(const Options& o) {
 Verdict kinetic_initial(const Options& o) {
   Verdict v;
   v.pass = true;
-  for (const Timing& t : timings(o)) v.figure("initial ÷ static, n = " + std::to_string(t.n), fmt(t.initial / t.statics));
-  v.summary = "initial kinetic run ÷ exact static run on the same points (target ≤ 5; one run each, static best of 5)";
+  double worst = 0;
+  for (const Timing& t : timings(o)) {
+    v.figure("initial ÷ static, n = " + std::to_string(t.n), fmt(t.initial / t.statics));
+    worst = std::max(worst, t.initial / t.statics);
+  }
+  v.summary = std::string("initial kinetic run ÷ exact static run on the same points (one run each, static best of 5): target ≤ 5 ") +
+              (worst <= 5 ? "met" : "NOT met");
   v.thesis = "Fig. 2.4: about 15x";
   return v;
 }

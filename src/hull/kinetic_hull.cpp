@@ -65,6 +65,8 @@ struct Border {  // a horizon entry: the invisible neighbour and the ripped face
 };
 
 const Face& rec(KH* kh, FaceH f) { return kh->rt().deref(f); }
+sac::IMod<FaceH>* nbr_box(const Face& f, int s) { return static_cast<sac::IMod<FaceH>*>(f.nbr[s]); }
+sac::IMod<Killer>* killer_box(const Face& f) { return static_cast<sac::IMod<Killer>*>(f.killer); }
 
 int slot(const Face& f, int a, int b) {
   for (int s = 0; s < 3; ++s) {
@@ -92,8 +94,8 @@ FaceH new_face(KH* kh, int a, int b, int c) {
 // Geometry.setFaceNeighbor: f and g become neighbours across the edge {a, b}.
 void set_face_neighbor(KH* kh, FaceH f, int a, int b, FaceH g) {
   const Face &F = rec(kh, f), &G = rec(kh, g);
-  kh->rt().iwrite(F.nbr[slot(F, a, b)], g);
-  kh->rt().iwrite(G.nbr[slot(G, a, b)], f);
+  kh->rt().iwrite(nbr_box(F, slot(F, a, b)), g);
+  kh->rt().iwrite(nbr_box(G, slot(G, a, b)), f);
 }
 
 // tent (with createFace and processEdgeVertex): one face (p, e) per horizon edge, in the sorted
@@ -134,10 +136,10 @@ void rip_loop(KH* kh, int p, Killer me, std::vector<std::pair<FaceH, int>> pendi
   pending.pop_back();
   const Face& R = rec(kh, r);
   const int eu = R.v[s], ev = R.v[(s + 1) % 3];
-  rt.iread(R.nbr[s], [kh, p, me, pending, boundary, eu, ev](FaceH g) {
+  rt.iread(nbr_box(R, s), [kh, p, me, pending, boundary, eu, ev](FaceH g) {
     KMR_CHECK(g != nullptr, "kinetic hull: a face without a neighbour");
     const Face& G = rec(kh, g);
-    kh->rt().iread(G.killer, [kh, p, me, pending, boundary, eu, ev, g](const Killer& k) {
+    kh->rt().iread(killer_box(G), [kh, p, me, pending, boundary, eu, ev, g](const Killer& k) {
       if (k.p >= 0) {  // ripped already (by p: g is on the current hull)
         KMR_CHECK(k.p == p, "kinetic hull: a neighbour on the current hull was ripped by another point");
         rip_loop(kh, p, me, pending, boundary);
@@ -156,7 +158,7 @@ void rip_loop(KH* kh, int p, Killer me, std::vector<std::pair<FaceH, int>> pendi
                       std::vector<std::pair<FaceH, int>> pd = pending;
                       std::vector<Border> bd = boundary;
                       if (side > 0) {  // halfSpaceTest: visible, ripFace
-                        kh->rt().iwrite(rec(kh, g).killer, me);  // setFaceKiller
+                        kh->rt().iwrite(killer_box(rec(kh, g)), me);  // setFaceKiller
                         for (int t = 2; t >= 0; --t) pd.emplace_back(g, t);
                       } else {
                         bd.push_back({g, eu, ev});
@@ -171,7 +173,7 @@ void rip_loop(KH* kh, int p, Killer me, std::vector<std::pair<FaceH, int>> pendi
 void rip(KH* kh, int p, FaceH f) {
   sac::Runtime& rt = kh->rt();
   Killer me{p, rt.alloc<Tent>(kTent, p)};
-  rt.iwrite(rec(kh, f).killer, me);  // ripFace: setFaceKiller
+  rt.iwrite(killer_box(rec(kh, f)), me);  // ripFace: setFaceKiller
   rip_loop(kh, p, me, {{f, 2}, {f, 1}, {f, 0}}, {});
 }
 
@@ -199,7 +201,7 @@ void search(KH* kh, int q, Tent tent, std::size_t i, int x) {
 // mfun findFace: along the killer chain while the located face is visible from x.
 void find_face(KH* kh, FaceH f, int x) {
   const Face& F = rec(kh, f);
-  sac::IMod<Killer>* killer = F.killer;
+  sac::IMod<Killer>* killer = killer_box(F);
   kh->rt().read(kh->certificate(KH::Test::visible, x, F.v[0], F.v[1], F.v[2]), [kh, f, x, killer](int side) {
     if (side < 0) return;  // not visible: x ∈ pyramid(c, f) ⊂ conv(A_i), discarded
     kh->rt().iread(killer, [kh, f, x](const Killer& k) {
@@ -288,7 +290,7 @@ KineticHull::~KineticHull() {
 void KineticHull::run() {
   sac::with_stack(kStack, [this] {
     rt_.run([this] {
-      const auto [a, b, c, d] = simplex_;
+      const int a = simplex_[0], b = simplex_[1], c = simplex_[2], d = simplex_[3];  // (no captured bindings: clang 14)
       Mod<Roots>* roots = rt_.alloc<Roots>(kRoots);
       rt_.read(certificate(Test::initial, a, b, c, d),
                [kh = this, roots, a, b, c, d](int side) { initial_hull(kh, roots, a, b, c, d, side); });
@@ -502,7 +504,7 @@ std::vector<std::array<int, 3>> KineticHull::facets() const {
   std::vector<std::array<int, 3>> out;
   for (const auto& [key, reg] : faces_) {
     const Face& f = rt_.deref(reg.first);
-    const Killer& k = *static_cast<const Killer*>(f.killer->last->value);  // the latest write
+    const Killer& k = *static_cast<const Killer*>(killer_box(f)->last->value);  // the latest write
     if (k.p >= 0) continue;
     std::array<int, 3> t = f.v;
     std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());

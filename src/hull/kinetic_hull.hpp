@@ -89,7 +89,15 @@ class KineticHull {
   const std::vector<MovingPoint>& points() const { return pts_; }
 
   // The program's internals (kinetic_hull.cpp); public so its free functions can reach them.
-  struct Face;
+  // Appendix A's Face: vertices, the boxes of the neighbours across (v0,v1), (v1,v2), (v2,v0)
+  // (IMod<FaceH>) and of the killer (IMod<Killer>), held by their non-template base so that Face is
+  // complete before Mod<Face> is named (kinetic_hull.cpp casts them back).
+  struct Face {
+    std::array<int, 3> v{};
+    std::array<sac::IModBase*, 3> nbr{};
+    sac::IModBase* killer = nullptr;
+    bool operator==(const Face&) const = default;
+  };
   using FaceH = sac::Mod<Face>*;
   struct Tent {  // Appendix A's getVertexFaces: the faces a point's insertion created, in order
     std::vector<FaceH> faces;
@@ -99,12 +107,6 @@ class KineticHull {
     int p = -1;
     sac::Mod<Tent>* tent = nullptr;
     bool operator==(const Killer&) const = default;
-  };
-  struct Face {  // Appendix A's Face: vertices, neighbour boxes across (v0,v1),(v1,v2),(v2,v0), killer
-    std::array<int, 3> v{};
-    std::array<sac::IMod<FaceH>*, 3> nbr{};
-    sac::IMod<Killer>* killer = nullptr;
-    bool operator==(const Face&) const = default;
   };
   enum class Test : std::uint8_t { initial, visible, side };
   // Inside runs: the certificate of a test (created, or reused with its trace).
