@@ -11,9 +11,11 @@
 namespace kmr::cli {
 
 int simulate_command(const Argv& argv) {
+  if (!argv.empty() && argv[0] == "hull") return simulate_hull_command(argv);
   Args args(argv, {"until", "lattice-bits"}, {});
   if (args.help() || args.positional().empty()) {
     std::cout << "usage: kmr simulate sort FILE [--until T] [--lattice-bits B]\n"
+                 "       kmr simulate hull FILE ... (see kmr simulate hull --help)\n"
                  "FILE has one point per line, 'x0 v' (decimal integers): position x0 + v·t ('#' comments).\n"
                  "Simulates kinetic sorting from time 0 to T (a decimal dyadic, a multiple of δ = 2^-B;\n"
                  "default T = 2^27, B = 10), processing the failures of each lattice interval as one batch.\n"
@@ -22,7 +24,7 @@ int simulate_command(const Argv& argv) {
     return args.help() ? 0 : 2;
   }
   const auto& pos = args.positional();
-  if (pos[0] != "sort") throw InputError("unknown structure '" + pos[0] + "' (known: sort)");
+  if (pos[0] != "sort") throw InputError("unknown structure '" + pos[0] + "' (known: sort, hull)");
   if (pos.size() != 2) throw InputError("kmr simulate sort takes exactly one FILE");
   int bits = static_cast<int>(args.integer("lattice-bits", 10, 0, 62));
   exact::Dyadic until = args.value("until") ? exact::Dyadic::parse(*args.value("until")) : exact::Dyadic::pow2(27);

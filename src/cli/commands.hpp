@@ -11,6 +11,7 @@ using Argv = std::vector<std::string>;
 int audit_command(const Argv& args);
 int roots_command(const Argv& args);
 int simulate_command(const Argv& args);
+int simulate_hull_command(const Argv& args);  // kmr simulate hull (cmd_simulate_hull.cpp)
 int bench_command(const Argv& args);
 int wellspaced_command(const Argv& args);
 int hull_command(const Argv& args);

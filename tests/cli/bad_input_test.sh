@@ -137,7 +137,7 @@ expect_error sort-until-hex "not a dyadic number: '0x1'" -- simulate sort "$f/s"
 expect_error sort-bits-63 "--lattice-bits 63 is out of range [0, 62]" -- simulate sort "$f/s" --lattice-bits 63
 expect_error sort-bits-neg "--lattice-bits -1 is out of range [0, 62]" -- simulate sort "$f/s" --lattice-bits -1
 expect_error sort-until-twice "option --until is given twice" -- simulate sort "$f/s" --until 1 --until 2
-expect_error sort-structure "unknown structure 'hull'" -- simulate hull "$f/s"
+expect_error sort-structure "unknown structure 'frob' (known: sort, hull)" -- simulate frob "$f/s"
 expect_error sort-two-files "exactly one FILE" -- simulate sort "$f/s" "$f/s"
 expect_same sort-hugenum -- simulate sort "$f/s_hugenum" --until 1 :: simulate sort "$f/s_hugenum" --until 1
 
@@ -153,6 +153,20 @@ expect_error roots-bits-big "--lattice-bits 4097 is out of range [0, 4096]" -- r
 expect_error roots-from-hex "not a dyadic number: '0x10'" -- roots --from 0x10 -- 1 1
 expect_error roots-from-twice "option --from is given twice" -- roots --from 0.5 --from 0.25 -- 1 1
 expect_error roots-from-missing "option --from needs a value" -- roots --from
+# --- kmr simulate hull FILE ('x y z vx vy vz' decimal integers per line) ---------------------------
+printf '0 0 0 1 0 0\n10 0 0 0 1 0\n0 10 0 0 0 1\n0 0 10 1 1 1\n3 3 3 -1 2 0\n' >"$f/h"
+printf '0 0 0 1 0 0\r\n10 0 0 0 1 0\r\n0 10 0 0 0 1\r\n0 0 10 1 1 1\r\n3 3 3 -1 2 0\r\n' >"$f/h_crlf"
+printf '0 0 0 1 0 0\n10 0 0 0 1 0\n0 10 0 0 0 1\n0 0 10 1 1 1\n0 0 0 1 0 0\n' >"$f/h_dup"
+printf '0 0 0 1 0 0\n10 0 0 0 1 0\n0 10 0 1 1 0\n5 5 0 0 0 0\n' >"$f/h_flat"
+printf '0 0 0 1 0 0\n10 0 0 0 1 0\n0 10 0 1 1 0\n5 5 0 0 0 0\n1 1 10 0 0 1\n2 3 -10 0 0 0\n' >"$f/h_coplanar4"
+printf '0 0 0 1 0\n' >"$f/h_arity"
+expect_same hull-crlf -- simulate hull "$f/h" --until 8 :: simulate hull "$f/h_crlf" --until 8
+expect_error hull-empty "empty: no points" -- simulate hull "$f/empty"
+expect_error hull-arity "h_arity:1: expected 6 integers" -- simulate hull "$f/h_arity"
+expect_error hull-dup "points 0 and 4 have identical trajectories" -- simulate hull "$f/h_dup"
+expect_error hull-flat "stay coplanar for all time" -- simulate hull "$f/h_flat"
+expect_error hull-coplanar4 "points 0, 1, 2 and 3 stay coplanar for all time" -- simulate hull "$f/h_coplanar4" --until 1
+expect_error hull-until-offlattice "is not a multiple of the lattice step" -- simulate hull "$f/h" --until 0.5 --lattice-bits 0
 expect_error roots-empty-window "empty window" -- roots --from 2 --to 2 -- 1 1
 expect_error roots-zero "zero polynomial" -- roots -- 0 0 0
 expect_error roots-no-coefs "no coefficients" -- roots --

@@ -1,0 +1,531 @@
+// The kinetic hull: Appendix A's MkIHull3DAdaptive (run, incrementalHull, insertVertex,
+// findAssociatedFace with search/findFace, rip with ripFace/ripLoop and sort, tent with createFace
+// and processEdgeVertex) over kmr::sac. Each function cites its ΔML original. See kinetic_hull.hpp.
+//
+// Continuation style: a read's continuation is the rest of the ΔML function (sac re-runs exactly the
+// continuation of a read whose value changed), so state that flows past a read (rip's pending faces
+// and boundary) is captured by value, never mutated in a closure. Face records are write-once
+// (their vertices and the boxes of their fields); the fields are imperative boxes (ΔML IBox) as in
+// Appendix A's EXTENDED_GEOMETRY: neighbours and killer are set by later insertions.
+//
+// Invariants the change-propagation proof rests on (§1.3.2):
+//  * Every value a continuation uses comes from its reads, its captures, or a face record, and a
+//    face record is a pure function of its allocation key (its vertices), so re-executing a read
+//    with the same value repeats the same operations.
+//  * Allocation keys are unique within an execution: a face (p, u, v) is created only by p's tent;
+//    a certificate is keyed by its test and points, and each test is made once per insertion
+//    (rip does not re-test an invisible face it already put on the horizon, see rip_loop).
+//  * The certificate and face registries are written only by the program (in runs and undo hooks)
+//    and never read by it, except for a certificate's current outcome as the initial value of its
+//    re-created traceable (the same polynomial, so the same value).
+#include "hull/kinetic_hull.hpp"
+
+#include <algorithm>
+
+#include "exact/error.hpp"
+#include "hull/priorities.hpp"
+
+namespace kmr::hull {
+
+std::uint64_t canon_value(const KineticHull::Killer& k) {
+  return sac::mix(sac::mix(0x4b11, static_cast<std::uint64_t>(k.p)), sac::canon_key(k.tent));
+}
+std::uint64_t canon_value(const KineticHull::Face& f) {
+  std::uint64_t h = 0xface;
+  for (int v : f.v) h = sac::mix(h, static_cast<std::uint64_t>(v));
+  for (auto* b : f.nbr) h = sac::mix(h, sac::canon_key(b));
+  return sac::mix(h, sac::canon_key(f.killer));
+}
+std::uint64_t canon_value(const KineticHull::Tent& t) {
+  std::uint64_t h = 0x7e27;
+  for (auto* f : t.faces) h = sac::mix(h, sac::canon_key(f));
+  return h;
+}
+
+namespace {
+
+using KH = KineticHull;
+using FaceH = KH::FaceH;
+using Face = KH::Face;
+using Killer = KH::Killer;
+using Tent = KH::Tent;
+using Roots = std::array<FaceH, 4>;
+using sac::Label;
+using sac::Mod;
+
+constexpr Label kFace{"hull.face"}, kNbr{"hull.face.nbr"}, kKiller{"hull.face.killer"}, kFaceHook{"hull.face.hook"},
+    kTent{"hull.tent"}, kRoots{"hull.roots"}, kCertInitial{"hull.cert.initial"}, kCertVisible{"hull.cert.visible"},
+    kCertSide{"hull.cert.side"}, kCertHook{"hull.cert.hook"};
+
+constexpr std::size_t kStack = std::size_t{1} << 30;  // virtual; continuations nest per insertion
+
+struct Border {  // a horizon entry: the invisible neighbour and the ripped face's edge
+  FaceH nbr;
+  int u, v;
+};
+
+const Face& rec(KH* kh, FaceH f) { return kh->rt().deref(f); }
+sac::IMod<FaceH>* nbr_box(const Face& f, int s) { return static_cast<sac::IMod<FaceH>*>(f.nbr[s]); }
+sac::IMod<Killer>* killer_box(const Face& f) { return static_cast<sac::IMod<Killer>*>(f.killer); }
+
+int slot(const Face& f, int a, int b) {
+  for (int s = 0; s < 3; ++s) {
+    int x = f.v[s], y = f.v[(s + 1) % 3];
+    if ((x == a && y == b) || (x == b && y == a)) return s;
+  }
+  throw ContractError("kinetic hull: face does not have the specified edge");
+}
+
+// Geometry.mkNewFace: the face record and its boxes, keyed by the vertices.
+FaceH new_face(KH* kh, int a, int b, int c) {
+  sac::Runtime& rt = kh->rt();
+  FaceH f = rt.alloc<Face>(kFace, a, b, c);
+  Face r;
+  r.v = {a, b, c};
+  for (int s = 0; s < 3; ++s) r.nbr[s] = rt.ialloc<FaceH>(kNbr, FaceH{nullptr}, a, b, c, s);
+  r.killer = rt.ialloc<Killer>(kKiller, Killer{}, a, b, c);
+  rt.write(f, r);
+  std::array<int, 3> key{a, b, c};
+  sac::HookId h = rt.on_discard(kFaceHook, [kh, key](sac::HookId self) { kh->face_discarded(key, self); });
+  kh->face_created(f, h);
+  return f;
+}
+
+// Geometry.setFaceNeighbor: f and g become neighbours across the edge {a, b}.
+void set_face_neighbor(KH* kh, FaceH f, int a, int b, FaceH g) {
+  const Face &F = rec(kh, f), &G = rec(kh, g);
+  kh->rt().iwrite(nbr_box(F, slot(F, a, b)), g);
+  kh->rt().iwrite(nbr_box(G, slot(G, a, b)), f);
+}
+
+// tent (with createFace and processEdgeVertex): one face (p, e) per horizon edge, in the sorted
+// order; the faces around p are linked through a table local to this tent (Appendix A keeps it in
+// each vertex's lastFace box, read and written only within one tent).
+void tent(KH* kh, int p, Mod<Tent>* box, const std::vector<Border>& boundary) {
+  std::vector<std::pair<int, FaceH>> last;  // processEdgeVertex's (q, f)
+  auto process_edge_vertex = [&](int q, FaceH f) {
+    for (auto& [v, g] : last)
+      if (v == q) {
+        set_face_neighbor(kh, f, p, q, g);
+        return;
+      }
+    last.emplace_back(q, f);
+  };
+  Tent t;
+  for (const Border& b : boundary) {  // createFace
+    FaceH f = new_face(kh, p, b.u, b.v);
+    set_face_neighbor(kh, f, b.u, b.v, b.nbr);
+    process_edge_vertex(b.u, f);
+    process_edge_vertex(b.v, f);
+    t.faces.push_back(f);
+  }
+  kh->rt().write(box, t);  // setVertexFaces
+}
+
+// ripLoop over pending (face, neighbour slot) pairs, then sort and tent. ripFace is the push of a
+// newly ripped face's three neighbours.
+void rip_loop(KH* kh, int p, Killer me, std::vector<std::pair<FaceH, int>> pending, std::vector<Border> boundary) {
+  sac::Runtime& rt = kh->rt();
+  if (pending.empty()) {  // sort: the horizon by edge id (Appendix A's quicksort, for stability)
+    std::sort(boundary.begin(), boundary.end(),
+              [](const Border& a, const Border& b) { return std::pair(a.u, a.v) < std::pair(b.u, b.v); });
+    tent(kh, p, me.tent, boundary);
+    return;
+  }
+  auto [r, s] = pending.back();
+  pending.pop_back();
+  const Face& R = rec(kh, r);
+  const int eu = R.v[s], ev = R.v[(s + 1) % 3];
+  rt.iread(nbr_box(R, s), [kh, p, me, pending, boundary, eu, ev](FaceH g) {
+    KMR_CHECK(g != nullptr, "kinetic hull: a face without a neighbour");
+    const Face& G = rec(kh, g);
+    kh->rt().iread(killer_box(G), [kh, p, me, pending, boundary, eu, ev, g](const Killer& k) {
+      if (k.p >= 0) {  // ripped already (by p: g is on the current hull)
+        KMR_CHECK(k.p == p, "kinetic hull: a neighbour on the current hull was ripped by another point");
+        rip_loop(kh, p, me, pending, boundary);
+        return;
+      }
+      // An invisible face met again across another edge: the answer is the one already read.
+      if (std::any_of(boundary.begin(), boundary.end(), [g](const Border& b) { return b.nbr == g; })) {
+        std::vector<Border> bd = boundary;
+        bd.push_back({g, eu, ev});
+        rip_loop(kh, p, me, pending, std::move(bd));
+        return;
+      }
+      const Face& G2 = rec(kh, g);
+      kh->rt().read(kh->certificate(KH::Test::visible, p, G2.v[0], G2.v[1], G2.v[2]),
+                    [kh, p, me, pending, boundary, eu, ev, g](int side) {
+                      std::vector<std::pair<FaceH, int>> pd = pending;
+                      std::vector<Border> bd = boundary;
+                      if (side > 0) {  // halfSpaceTest: visible, ripFace
+                        kh->rt().iwrite(killer_box(rec(kh, g)), me);  // setFaceKiller
+                        for (int t = 2; t >= 0; --t) pd.emplace_back(g, t);
+                      } else {
+                        bd.push_back({g, eu, ev});
+                      }
+                      rip_loop(kh, p, me, std::move(pd), std::move(bd));
+                    });
+    });
+  });
+}
+
+// mfun rip (p, f): f is alive and visible from p (find_face checked it).
+void rip(KH* kh, int p, FaceH f) {
+  sac::Runtime& rt = kh->rt();
+  Killer me{p, rt.alloc<Tent>(kTent, p)};
+  rt.iwrite(killer_box(rec(kh, f)), me);  // ripFace: setFaceKiller
+  rip_loop(kh, p, me, {{f, 2}, {f, 1}, {f, 0}}, {});
+}
+
+void find_face(KH* kh, FaceH f, int x);
+
+// mfun search: the tent face of q whose pyramid contains x (sides (w, u, c) and (u, v, c) of
+// face (u = q, v, w)).
+void search(KH* kh, int q, Tent tent, std::size_t i, int x) {
+  KMR_CHECK(i < tent.faces.size(), "kinetic hull: no tent face of point " + std::to_string(q) +
+                                       " contains the ray to " + std::to_string(x));
+  const Face& g = rec(kh, tent.faces[i]);
+  const int v1 = g.v[1], v2 = g.v[2];
+  kh->rt().read(kh->certificate(KH::Test::side, x, v2, q, -1), [kh, q, tent, i, x, v1](int side1) {
+    if (side1 < 0) {
+      search(kh, q, tent, i + 1, x);
+      return;
+    }
+    kh->rt().read(kh->certificate(KH::Test::side, x, q, v1, -1), [kh, q, tent, i, x](int side2) {
+      if (side2 < 0) search(kh, q, tent, i + 1, x);
+      else find_face(kh, tent.faces[i], x);
+    });
+  });
+}
+
+// mfun findFace: along the killer chain while the located face is visible from x.
+void find_face(KH* kh, FaceH f, int x) {
+  const Face& F = rec(kh, f);
+  sac::IMod<Killer>* killer = killer_box(F);
+  kh->rt().read(kh->certificate(KH::Test::visible, x, F.v[0], F.v[1], F.v[2]), [kh, f, x, killer](int side) {
+    if (side < 0) return;  // not visible: x ∈ pyramid(c, f) ⊂ conv(A_i), discarded
+    kh->rt().iread(killer, [kh, f, x](const Killer& k) {
+      if (k.p < 0) {
+        rip(kh, x, f);  // insertVertex: rip and tent
+        return;
+      }
+      kh->rt().read(k.tent, [kh, q = k.p, x](const Tent& t) { search(kh, q, t, 0, x); });
+    });
+  });
+}
+
+// findAssociatedFace at the root: the initial face whose pyramid contains x (three sides each).
+void locate_root(KH* kh, Roots roots, int i, int s, int x) {
+  KMR_CHECK(i < 4, "kinetic hull: the initial pyramids do not cover point " + std::to_string(x));
+  const Face& f = rec(kh, roots[i]);
+  const int u = f.v[s], v = f.v[(s + 1) % 3];
+  kh->rt().read(kh->certificate(KH::Test::side, x, u, v, -1), [kh, roots, i, s, x](int side) {
+    if (side < 0) locate_root(kh, roots, i + 1, 0, x);
+    else if (s < 2) locate_root(kh, roots, i, s + 1, x);
+    else find_face(kh, roots[i], x);
+  });
+}
+
+// incrementalHull's initial faces: conv(A_4), each face counter-clockwise from outside.
+void initial_hull(KH* kh, Mod<Roots>* roots, int a, int b, int c, int d, int side) {
+  if (side > 0) std::swap(b, c);  // d lies below abc: abc faces outward
+  Roots r{new_face(kh, a, b, c), new_face(kh, a, d, b), new_face(kh, b, d, c), new_face(kh, c, d, a)};
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      const Face &f = rec(kh, r[i]), &g = rec(kh, r[j]);
+      int shared[2], m = 0;
+      for (int u : f.v)
+        if (std::count(g.v.begin(), g.v.end(), u)) shared[m++] = u;
+      set_face_neighbor(kh, r[i], shared[0], shared[1], r[j]);
+    }
+  kh->rt().write(roots, r);
+}
+
+const Label& label_of(KH::Test t) {
+  switch (t) {
+    case KH::Test::initial: return kCertInitial;
+    case KH::Test::visible: return kCertVisible;
+    default: return kCertSide;
+  }
+}
+
+}  // namespace
+
+KineticHull::KineticHull(std::vector<MovingPoint> points, kinetic::MotionSimulator& sim, std::uint64_t seed,
+                         std::vector<bool> present)
+    : pts_(std::move(points)), sim_(&sim), t_(sim.now()), present_(std::move(present)) {
+  order_ = priority_order(random_priorities(static_cast<int>(pts_.size()), seed));
+  start();
+}
+
+KineticHull::KineticHull(std::vector<MovingPoint> points, const exact::Dyadic& t, std::uint64_t seed,
+                         std::vector<bool> present)
+    : pts_(std::move(points)), t_(t), present_(std::move(present)) {
+  order_ = priority_order(random_priorities(static_cast<int>(pts_.size()), seed));
+  start();
+}
+
+void KineticHull::start() {
+  if (present_.empty()) present_.assign(pts_.size(), true);
+  KMR_CHECK(present_.size() == pts_.size(), "KineticHull: one presence flag per point");
+  std::vector<int> live_order;
+  for (int x : order_)
+    if (present_[x]) live_order.push_back(x);
+  refuse_identical_trajectories(pts_);
+  simplex_ = initial_simplex_of(pts_, live_order);
+  centre_sum_ = trajectory_sum(pts_[simplex_[0]], pts_[simplex_[1]], pts_[simplex_[2]], pts_[simplex_[3]]);
+  if (present_box_.empty())
+    for (std::size_t x = 0; x < pts_.size(); ++x)
+      present_box_.push_back(rt_.input<bool>(sac::Label("hull.present"), x, present_[x]));
+  run();
+}
+
+KineticHull::~KineticHull() {
+  if (sim_)
+    for (auto& [key, reg] : certs_) sim_->remove(reg.sim);
+}
+
+// run / incrementalHull / app insertVertex: the initial tetrahedron (its orientation a
+// certificate), then every other point in priority order.
+void KineticHull::run() {
+  sac::with_stack(kStack, [this] {
+    rt_.run([this] {
+      const int a = simplex_[0], b = simplex_[1], c = simplex_[2], d = simplex_[3];  // (no captured bindings: clang 14)
+      Mod<Roots>* roots = rt_.alloc<Roots>(kRoots);
+      rt_.read(certificate(Test::initial, a, b, c, d),
+               [kh = this, roots, a, b, c, d](int side) { initial_hull(kh, roots, a, b, c, d, side); });
+      for (int x : order_) {
+        if (x == a || x == b || x == c || x == d) continue;
+        // insertVertex x (if x is in the set): findAssociatedFace, then rip and tent.
+        rt_.read(present_box_[x], [kh = this, roots, x](bool on) {
+          if (on) kh->rt().read(roots, [kh, x](const Roots& r) { locate_root(kh, r, 0, 0, x); });
+        });
+      }
+    });
+  });
+}
+
+void KineticHull::update(const std::vector<kinetic::CertificateId>& batch) {
+  KMR_CHECK(sim_ != nullptr, "KineticHull::update on a from-scratch reference");
+  for (kinetic::CertificateId id : batch) {
+    auto k = by_sim_.find(id);
+    KMR_CHECK(k != by_sim_.end(), "kinetic hull: a batch names a certificate the hull does not own");
+    rt_.change(certs_.at(k->second).cert, sim_->outcome(id));
+  }
+  propagate();
+}
+
+void KineticHull::propagate() {
+  if (sim_) t_ = sim_->now();
+  sac::with_stack(kStack, [this] { rt_.propagate(); });
+  ++counters_.propagations;
+}
+
+void KineticHull::index_certificate(const CertificateKey& key, bool add) {
+  for (int i = 1; i < 5; ++i) {
+    if (key[i] < 0) continue;
+    auto& v = by_point_[key[i]];
+    if (add) v.push_back(key);
+    else v.erase(std::find(v.begin(), v.end(), key));
+  }
+}
+
+// §2.4's motion change: every live certificate whose polynomial involves x (all centre tests and
+// the tetrahedron's orientation too if x is one of its points, since the centre moves with them)
+// gets its new polynomial: the simulator's certificate is replaced and the traceable takes the new
+// polynomial's sign just before now; then one propagation repairs the trace.
+void KineticHull::change_motion(int x, MovingPoint r) {
+  KMR_CHECK(x >= 0 && x < static_cast<int>(pts_.size()), "change_motion: no such point");
+  for (std::size_t y = 0; y < pts_.size(); ++y)
+    if (static_cast<int>(y) != x && pts_[y] == r)
+      throw InputError("points " + std::to_string(std::min<int>(x, y)) + " and " + std::to_string(std::max<int>(x, y)) +
+                       " would have identical trajectories after the motion change");
+  const std::array<int, 4> before = simplex_;
+  MovingPoint old = pts_[x];
+  const MovingPoint old_sum = centre_sum_;
+  pts_[x] = std::move(r);
+  auto restore = [&] {
+    pts_[x] = old;
+    centre_sum_ = old_sum;
+  };
+  std::vector<int> live_order;
+  for (int y : order_)
+    if (present_[y]) live_order.push_back(y);
+  std::array<int, 4> after;
+  try {
+    after = initial_simplex_of(pts_, live_order);
+  } catch (const InputError&) {
+    restore();
+    throw;
+  }
+  ++counters_.integrated_changes;
+  if (after != before) {  // an identical degeneracy appeared or went: a new tetrahedron
+    ++counters_.rebuilds;
+    rt_.reset();
+    start();
+    return;
+  }
+  const bool centre = std::count(before.begin(), before.end(), x) > 0;
+  if (centre) centre_sum_ = trajectory_sum(pts_[before[0]], pts_[before[1]], pts_[before[2]], pts_[before[3]]);
+  std::vector<CertificateKey> affected;
+  if (centre)
+    for (const auto& [key, reg] : certs_)
+      if (key[0] != static_cast<int>(Test::visible)) affected.push_back(key);
+  if (auto it = by_point_.find(x); it != by_point_.end())
+    affected.insert(affected.end(), it->second.begin(), it->second.end());
+  std::sort(affected.begin(), affected.end());
+  affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
+  std::vector<Polynomial> polys;  // all computed first: a refused change changes nothing
+  for (const CertificateKey& key : affected) {
+    const Test test = static_cast<Test>(key[0]);
+    polys.push_back(polynomial(test, key[1], key[2], key[3], key[4]));
+    if (polys.back().is_zero()) {
+      restore();
+      --counters_.integrated_changes;
+      throw InputError(describe(test, key[1], key[2], key[3], key[4]) + " (after the motion change)");
+    }
+  }
+  for (std::size_t i = 0; i < affected.size(); ++i) {
+    Registration& reg = certs_.at(affected[i]);
+    int outcome;
+    if (sim_) {
+      sim_->remove(reg.sim);
+      by_sim_.erase(reg.sim);
+      reg.sim = sim_->add(polys[i]);
+      by_sim_.emplace(reg.sim, affected[i]);
+      ++counters_.certificates_created;
+      outcome = sim_->outcome(reg.sim);
+    } else {
+      outcome = poly::sign_before(polys[i], t_);
+    }
+    rt_.change(reg.cert, outcome);
+  }
+  propagate();
+}
+
+void KineticHull::set_present(int x, bool on) {
+  KMR_CHECK(x >= 0 && x < static_cast<int>(pts_.size()), "insert/remove: no such point");
+  if (present_[x] == on) return;
+  ++counters_.integrated_changes;
+  present_[x] = on;
+  std::vector<int> live_order;
+  for (int y : order_)
+    if (present_[y]) live_order.push_back(y);
+  std::array<int, 4> now_simplex;
+  try {
+    now_simplex = initial_simplex_of(pts_, live_order);
+  } catch (const InputError&) {
+    present_[x] = !on;
+    throw;
+  }
+  rt_.change(present_box_[x], on);
+  if (now_simplex != simplex_) {
+    ++counters_.rebuilds;
+    rt_.reset();
+    start();
+    return;
+  }
+  propagate();
+}
+
+void KineticHull::remove_point(int x) { set_present(x, false); }
+void KineticHull::insert_point(int x) { set_present(x, true); }
+
+Polynomial KineticHull::polynomial(Test test, int a, int b, int c, int d) const {
+  switch (test) {
+    case Test::initial: return orientation_polynomial(pts_[a], pts_[b], pts_[c], pts_[d]);
+    case Test::visible: return orientation_polynomial(pts_[b], pts_[c], pts_[d], pts_[a]);  // face bcd, point a
+    default: return centre_side_polynomial(pts_[b], pts_[c], pts_[a], centre_sum_);       // point a, side (b, c, centre)
+  }
+}
+
+std::string KineticHull::describe(Test test, int a, int b, int c, int d) const {
+  auto s = [](int i) { return std::to_string(i); };
+  if (test == Test::side)
+    return "points " + s(b) + ", " + s(c) + ", " + s(a) + " and the centre (the centroid of points " + s(simplex_[0]) +
+           ", " + s(simplex_[1]) + ", " + s(simplex_[2]) + ", " + s(simplex_[3]) +
+           ") stay coplanar for all time: an identically zero certificate";
+  int lo[4] = {a, b, c, d};
+  std::sort(lo, lo + 4);
+  return "points " + s(lo[0]) + ", " + s(lo[1]) + ", " + s(lo[2]) + " and " + s(lo[3]) +
+         " stay coplanar for all time: an identically zero certificate";
+}
+
+sac::Mod<int>* KineticHull::certificate(Test test, int a, int b, int c, int d) {
+  const CertificateKey key{static_cast<int>(test), a, b, c, d};
+  auto it = certs_.find(key);
+  int initial;
+  kinetic::CertificateId sid = 0;
+  if (it != certs_.end()) {
+    initial = it->second.cert->value;  // the same polynomial's current outcome
+  } else {
+    Polynomial P = polynomial(test, a, b, c, d);
+    if (P.is_zero()) throw InputError(describe(test, a, b, c, d));
+    if (sim_) {
+      sid = sim_->add(P);
+      initial = sim_->outcome(sid);
+      ++counters_.certificates_created;
+    } else {
+      initial = poly::sign_before(P, t_);
+    }
+  }
+  sac::Mod<int>* m = rt_.traceable<int>(label_of(test), initial, a, b, c, d);
+  sac::HookId hook = rt_.on_discard(kCertHook, [this, key](sac::HookId self) { certificate_discarded(key, self); });
+  if (it != certs_.end()) {
+    it->second.cert = m;  // reused, or re-created under its key: the simulator keeps its certificate
+    it->second.hook = hook;
+  } else {
+    certs_.emplace(key, Registration{m, hook, sid});
+    index_certificate(key, true);
+    if (sim_) by_sim_.emplace(sid, key);
+  }
+  return m;
+}
+
+void KineticHull::certificate_discarded(const CertificateKey& key, sac::HookId self) {
+  auto it = certs_.find(key);
+  if (it == certs_.end() || it->second.hook != self) return;  // a successor's registration
+  if (sim_) {
+    sim_->remove(it->second.sim);
+    by_sim_.erase(it->second.sim);
+  }
+  index_certificate(key, false);
+  certs_.erase(it);
+}
+
+void KineticHull::face_created(FaceH f, sac::HookId hook) { faces_[rt_.deref(f).v] = {f, hook}; }
+
+void KineticHull::face_discarded(const std::array<int, 3>& key, sac::HookId self) {
+  auto it = faces_.find(key);
+  if (it != faces_.end() && it->second.second == self) faces_.erase(it);
+}
+
+std::vector<std::array<int, 3>> KineticHull::facets() const {
+  std::vector<std::array<int, 3>> out;
+  for (const auto& [key, reg] : faces_) {
+    const Face& f = rt_.deref(reg.first);
+    const Killer& k = *static_cast<const Killer*>(killer_box(f)->last->value);  // the latest write
+    if (k.p >= 0) continue;
+    std::array<int, 3> t = f.v;
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    out.push_back(t);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<int> KineticHull::vertices() const {
+  std::vector<int> v;
+  for (const auto& t : facets()) v.insert(v.end(), t.begin(), t.end());
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  return v;
+}
+
+std::vector<KineticHull::CertificateKey> KineticHull::certificate_keys() const {
+  std::vector<CertificateKey> k;
+  for (const auto& [key, reg] : certs_) k.push_back(key);
+  return k;
+}
+
+}  // namespace kmr::hull

@@ -1,0 +1,155 @@
+#pragma once
+// The kinetic 3D convex hull of §2.2–§2.3: Appendix A's MkIHull3DAdaptive run as a self-adjusting
+// program over kmr::sac, its certificates scheduled by the lattice MotionSimulator (§2.1).
+//
+// Every comparison the static algorithm makes (hull.hpp) is a certificate: a traceable ±1 created
+// during the run, keyed by the points it compares, whose polynomial (moving_points.hpp) is handed to
+// the simulator; the simulator flips outcomes batch by batch and change propagation repairs the
+// trace. Discarded trace releases its certificates (undo hooks).
+//
+// Guarantees (tests in tests/hull/kinetic_hull_test.cpp):
+//  * After construction and after every update(batch), facets() is the convex hull of the points
+//    just before the simulator's now() (outcomes are signs just before now, §2.1), in the format
+//    of `kmr hull` (counter-clockwise from outside, smallest index first, sorted).
+//  * The trace after every propagation equals the trace of a from-scratch run at the current time
+//    (signature()), and the live certificates are exactly the from-scratch run's (certificate_keys()).
+//  * Every live certificate is scheduled in the simulator exactly once; discarded ones are removed.
+//  * Refused with an InputError naming the points: identical trajectories, fewer than four points
+//    that are not identically coplanar, and any certificate that is identically zero (e.g. four
+//    points that stay coplanar for all time).
+//  * Integrated changes (§2.4) keep all of the above: change_motion(x, r), remove_point(x) and
+//    insert_point(x) act between batches, each followed by one propagation. The points that may
+//    ever take part are given at construction (`present` says which do at first, default all);
+//    their priorities are fixed, so an insertion takes its place in the priority order.
+//    A change that alters the initial tetrahedron (one of its points removed, a point of higher
+//    priority inserted, or an identical degeneracy appearing) rebuilds the run from scratch.
+//  * Deterministic: a pure function of (trajectories, seed, presence, the simulator's batches, the
+//    integrated changes).
+#include <array>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "hull/moving_points.hpp"
+#include "kinetic/motion_simulator.hpp"
+#include "sac/runtime.hpp"
+
+namespace kmr::hull {
+
+struct KineticCounters {
+  long long certificates_created = 0;  // certificates added to the simulator over the whole run
+  long long propagations = 0;
+  long long integrated_changes = 0;
+  long long rebuilds = 0;  // integrated changes that altered the initial tetrahedron
+};
+
+class KineticHull {
+ public:
+  // The kinetic run: certificates are created in `sim` (its now() is the run's time).
+  KineticHull(std::vector<MovingPoint> points, kinetic::MotionSimulator& sim, std::uint64_t seed = 2012,
+              std::vector<bool> present = {});
+  // A from-scratch self-adjusting run at time t without a simulator (outcomes: signs just before t);
+  // the reference of the stability and compactness checks.
+  KineticHull(std::vector<MovingPoint> points, const exact::Dyadic& t, std::uint64_t seed = 2012,
+              std::vector<bool> present = {});
+  ~KineticHull();
+  KineticHull(const KineticHull&) = delete;
+  KineticHull& operator=(const KineticHull&) = delete;
+
+  // Repairs a batch the simulator returned: changes the failed certificates, then propagates.
+  void update(const std::vector<kinetic::CertificateId>& batch);
+  // Runs the simulation up to `until`, updating after each batch; after_batch (if given) is called
+  // after each update.
+  template <class F>
+  void run_until(const exact::Dyadic& until, F&& after_batch) {
+    while (auto batch = sim_->next_batch(until)) {
+      update(*batch);
+      after_batch();
+    }
+  }
+
+  // Integrated changes (outside batches): the motion of x becomes r; x leaves or joins the set.
+  void change_motion(int x, MovingPoint r);
+  void remove_point(int x);
+  void insert_point(int x);
+  const std::vector<bool>& present() const { return present_; }
+
+  std::vector<std::array<int, 3>> facets() const;  // alive faces, kmr hull's format
+  std::vector<int> vertices() const;
+  std::string signature() const { return rt_.signature(); }
+  using CertificateKey = std::array<int, 5>;  // (test, points...; −1 where unused)
+  std::vector<CertificateKey> certificate_keys() const;  // live certificates, increasing
+  std::size_t live_certificates() const { return certs_.size(); }
+  const KineticCounters& counters() const { return counters_; }
+  const sac::Runtime& runtime() const { return rt_; }
+  const std::vector<MovingPoint>& points() const { return pts_; }
+
+  // The program's internals (kinetic_hull.cpp); public so its free functions can reach them.
+  // Appendix A's Face: vertices, the boxes of the neighbours across (v0,v1), (v1,v2), (v2,v0)
+  // (IMod<FaceH>) and of the killer (IMod<Killer>), held by their non-template base so that Face is
+  // complete before Mod<Face> is named (kinetic_hull.cpp casts them back).
+  struct Face {
+    std::array<int, 3> v{};
+    std::array<sac::IModBase*, 3> nbr{};
+    sac::IModBase* killer = nullptr;
+    bool operator==(const Face&) const = default;
+  };
+  using FaceH = sac::Mod<Face>*;
+  struct Tent {  // Appendix A's getVertexFaces: the faces a point's insertion created, in order
+    std::vector<FaceH> faces;
+    bool operator==(const Tent&) const = default;
+  };
+  struct Killer {  // the point that ripped a face and the box of its tent faces (−1: alive)
+    int p = -1;
+    sac::Mod<Tent>* tent = nullptr;
+    bool operator==(const Killer&) const = default;
+  };
+  enum class Test : std::uint8_t { initial, visible, side };
+  // Inside runs: the certificate of a test (created, or reused with its trace).
+  sac::Mod<int>* certificate(Test test, int a, int b, int c, int d);
+  void face_created(FaceH f, sac::HookId hook);
+  void face_discarded(const std::array<int, 3>& key, sac::HookId self);
+  void certificate_discarded(const CertificateKey& key, sac::HookId self);
+  sac::Runtime& rt() { return rt_; }
+  const std::vector<int>& order() const { return order_; }
+  const std::array<int, 4>& simplex() const { return simplex_; }
+
+ private:
+  void run();
+  void start();                           // chooses the tetrahedron and centre, then run()
+  void propagate();
+  void set_present(int x, bool on);
+  void index_certificate(const CertificateKey& key, bool add);
+  Polynomial polynomial(Test test, int a, int b, int c, int d) const;
+  std::string describe(Test test, int a, int b, int c, int d) const;
+
+  struct Registration {
+    sac::Mod<int>* cert = nullptr;
+    sac::HookId hook = 0;
+    kinetic::CertificateId sim = 0;
+  };
+  std::vector<MovingPoint> pts_;
+  kinetic::MotionSimulator* sim_ = nullptr;  // null: a from-scratch reference at time t_
+  exact::Dyadic t_;
+  std::vector<int> order_;
+  std::vector<bool> present_;
+  std::vector<sac::Mod<bool>*> present_box_;                          // inputs, one per point
+  std::map<int, std::vector<CertificateKey>> by_point_;              // point → its live certificates
+  std::array<int, 4> simplex_{};
+  MovingPoint centre_sum_;
+  sac::Runtime rt_;
+  std::map<CertificateKey, Registration> certs_;                       // live certificates
+  std::unordered_map<kinetic::CertificateId, CertificateKey> by_sim_;  // simulator id → key (lookup only)
+  std::map<std::array<int, 3>, std::pair<FaceH, sac::HookId>> faces_;  // live face records by vertices
+  KineticCounters counters_;
+};
+
+std::uint64_t canon_value(const KineticHull::Killer& k);
+std::uint64_t canon_value(const KineticHull::Face& f);
+std::uint64_t canon_value(const KineticHull::Tent& t);
+
+}  // namespace kmr::hull

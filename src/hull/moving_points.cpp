@@ -1,0 +1,129 @@
+#include "hull/moving_points.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <sstream>
+
+#include "exact/error.hpp"
+#include "geometry/predicates.hpp"
+
+namespace kmr::hull {
+
+std::vector<MovingPoint> parse_hull_motions(std::istream& in, const std::string& filename) {
+  std::vector<MovingPoint> points;
+  std::string line;
+  for (long long number = 1; std::getline(in, line); ++number) {
+    auto where = [&] { return filename + ":" + std::to_string(number) + ": "; };
+    if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+    std::istringstream fields(line);
+    std::vector<std::string> words;
+    for (std::string w; fields >> w;) words.push_back(w);
+    if (words.empty()) continue;
+    if (words.size() != 6)
+      throw InputError(where() + "expected 6 integers 'x y z vx vy vz', found " + std::to_string(words.size()) +
+                       " fields: '" + line + "'");
+    MovingPoint p;
+    try {
+      for (int k = 0; k < 3; ++k)
+        p[k] = Polynomial(std::vector<exact::Integer>{exact::parse_integer(words[k]), exact::parse_integer(words[k + 3])});
+    } catch (const InputError& e) {
+      throw InputError(where() + e.what());
+    }
+    points.push_back(std::move(p));
+  }
+  if (in.bad()) throw InputError(filename + ": read error");
+  if (points.empty()) throw InputError(filename + ": no points");
+  return points;
+}
+
+Polynomial orientation_polynomial(const MovingPoint& p, const MovingPoint& q, const MovingPoint& r,
+                                  const MovingPoint& s) {
+  return geometry::orientation_value<Polynomial>(p, q, r, s);
+}
+
+namespace {
+MovingPoint times4(const MovingPoint& p) {
+  MovingPoint r;
+  for (int k = 0; k < 3; ++k) r[k] = exact::Integer(4) * p[k];
+  return r;
+}
+}  // namespace
+
+Polynomial centre_side_polynomial(const MovingPoint& u, const MovingPoint& v, const MovingPoint& x,
+                                  const MovingPoint& centre_sum) {
+  // det[4v − 4u, S − 4u, 4x − 4u] = 64·det[v − u, c − u, x − u] with c = S/4.
+  return geometry::orientation_value<Polynomial>(times4(u), times4(v), centre_sum, times4(x));
+}
+
+MovingPoint trajectory_sum(const MovingPoint& a, const MovingPoint& b, const MovingPoint& c, const MovingPoint& d) {
+  MovingPoint s;
+  for (int k = 0; k < 3; ++k) s[k] = a[k] + b[k] + c[k] + d[k];
+  return s;
+}
+
+void refuse_identical_trajectories(const std::vector<MovingPoint>& points) {
+  std::vector<int> by(points.size());
+  std::iota(by.begin(), by.end(), 0);
+  auto key = [&](int i) {
+    std::vector<exact::Integer> c;
+    for (int k = 0; k < 3; ++k) {
+      const auto& cs = points[i][k].coefficients();
+      c.push_back(exact::Integer(static_cast<long long>(cs.size())));
+      c.insert(c.end(), cs.begin(), cs.end());
+    }
+    return c;
+  };
+  std::vector<std::vector<exact::Integer>> keys;
+  keys.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) keys.push_back(key(static_cast<int>(i)));
+  std::sort(by.begin(), by.end(), [&](int a, int b) { return keys[a] != keys[b] ? keys[a] < keys[b] : a < b; });
+  int best_a = -1, best_b = -1;
+  for (std::size_t i = 1; i < by.size(); ++i)
+    if (keys[by[i - 1]] == keys[by[i]] && (best_a < 0 || std::pair(by[i - 1], by[i]) < std::pair(best_a, best_b)))
+      best_a = by[i - 1], best_b = by[i];
+  if (best_a >= 0)
+    throw InputError("points " + std::to_string(best_a) + " and " + std::to_string(best_b) +
+                     " have identical trajectories (they coincide for all time)");
+}
+
+std::array<int, 4> initial_simplex_of(const std::vector<MovingPoint>& pts, const std::vector<int>& order) {
+  const std::size_t n = order.size();
+  if (n < 4) throw InputError("fewer than four points: a 3D hull needs four affinely independent points");
+  const int a = order[0], b = order[1];  // trajectories are distinct (refused otherwise)
+  auto collinear = [&](int x) {
+    using geometry::operator-;
+    auto u = pts[b] - pts[a], v = pts[x] - pts[a];
+    return (u[1] * v[2] - u[2] * v[1]).is_zero() && (u[2] * v[0] - u[0] * v[2]).is_zero() &&
+           (u[0] * v[1] - u[1] * v[0]).is_zero();
+  };
+  std::size_t i = 2;
+  while (i < n && collinear(order[i])) ++i;
+  if (i == n) throw InputError("all points stay collinear for all time: a 3D hull needs four affinely independent points");
+  const int c = order[i];
+  while (i < n && orientation_polynomial(pts[a], pts[b], pts[c], pts[order[i]]).is_zero()) ++i;
+  if (i == n) throw InputError("all points stay coplanar for all time: a 3D hull needs four affinely independent points");
+  return {a, b, c, order[i]};
+}
+
+MovingPoint three_quarters(const MovingPoint& r) {
+  MovingPoint out;
+  for (int k = 0; k < 3; ++k) {
+    std::vector<exact::Integer> c;
+    for (const exact::Integer& a : r[k].coefficients()) c.push_back(exact::Integer(3) * a / 4);
+    out[k] = Polynomial(c);
+  }
+  return out;
+}
+
+std::array<exact::Dyadic, 3> position_at(const MovingPoint& p, const exact::Dyadic& t) {
+  std::array<exact::Dyadic, 3> r;
+  for (int k = 0; k < 3; ++k) {
+    exact::Dyadic acc(0);
+    const auto& cs = p[k].coefficients();
+    for (std::size_t j = cs.size(); j-- > 0;) acc = acc * t + exact::Dyadic(cs[j], 0);
+    r[k] = acc;
+  }
+  return r;
+}
+
+}  // namespace kmr::hull

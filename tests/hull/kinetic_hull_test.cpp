@@ -1,0 +1,164 @@
+// The kinetic hull (kinetic_hull.hpp) against its judges after every batch: the static algorithm
+// run from scratch just before now (C2.2-hull-correct), the independent hull certificate, and a
+// from-scratch self-adjusting run (C2.2-stability: trace signature; F2.8: live certificates).
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <random>
+#include <sstream>
+
+#include "exact/error.hpp"
+#include "hull/hull_at_time.hpp"
+#include "hull/kinetic_hull.hpp"
+
+namespace kmr::hull {
+namespace {
+
+using exact::Dyadic;
+using exact::Integer;
+
+MovingPoint linear(long long x, long long y, long long z, long long vx, long long vy, long long vz) {
+  MovingPoint p;
+  p[0] = Polynomial(std::vector<Integer>{x, vx});
+  p[1] = Polynomial(std::vector<Integer>{y, vy});
+  p[2] = Polynomial(std::vector<Integer>{z, vz});
+  return p;
+}
+
+std::vector<MovingPoint> random_motions(int n, std::uint64_t seed, int pos_bits = 10, int vel_bits = 6) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<long long> pos(-(1LL << pos_bits), 1LL << pos_bits), vel(-(1LL << vel_bits), 1LL << vel_bits);
+  std::vector<MovingPoint> pts;
+  for (int i = 0; i < n; ++i) pts.push_back(linear(pos(rng), pos(rng), pos(rng), vel(rng), vel(rng), vel(rng)));
+  return pts;
+}
+
+struct Judged {
+  long long batches = 0, events = 0, max_batch = 0;
+};
+
+// Simulates to `until`, judging after every batch (and after the initial run).
+Judged simulate_and_judge(const std::vector<MovingPoint>& pts, int bits, const Dyadic& until, std::uint64_t seed = 2012) {
+  kinetic::MotionSimulator sim(bits, until);
+  KineticHull kh(pts, sim, seed);
+  Judged j;
+  auto judge = [&] {
+    SCOPED_TRACE("time " + sim.now().to_decimal());
+    const auto facets = kh.facets();
+    EXPECT_EQ(facets, static_hull_before(pts, sim.now(), seed));
+    EXPECT_EQ(hull_certificate_failure(pts, sim.now(), facets), "");
+    KineticHull scratch(pts, sim.now(), seed);
+    EXPECT_EQ(kh.signature(), scratch.signature());
+    EXPECT_EQ(kh.certificate_keys(), scratch.certificate_keys());
+    EXPECT_EQ(kh.live_certificates(), static_cast<std::size_t>(sim.counters().live()));
+  };
+  judge();
+  while (auto batch = sim.next_batch(until)) {
+    kh.update(*batch);
+    ++j.batches;
+    judge();
+    if (::testing::Test::HasFailure()) break;
+  }
+  j.events = sim.counters().events;
+  j.max_batch = sim.counters().max_batch;
+  return j;
+}
+
+TEST(KineticHull, C2_2_RandomMotionsMatchStaticAndScratchAfterEveryBatch) {
+  ::testing::Test::RecordProperty("claim", "C2.2-hull-correct C2.2-stability F2.8-compactness");
+  long long batches = 0, events = 0;
+  for (std::uint64_t seed = 1; seed <= 2; ++seed) {
+    auto pts = random_motions(10 + 4 * static_cast<int>(seed), seed);
+    Judged j = simulate_and_judge(pts, 4, Dyadic(16), seed);
+    batches += j.batches, events += j.events;
+  }
+  std::cout << "batches " << batches << ", events " << events << "\n";
+  EXPECT_GT(batches, 20);  // the motions do change the hull
+}
+
+TEST(KineticHull, StartsCoplanar) {
+  // All points on z = 0 at t = 0 (a degenerate start), distinct vertical speeds.
+  std::vector<MovingPoint> pts;
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<long long> pos(-100, 100), vel(-8, 8);
+  for (int i = 0; i < 14; ++i) pts.push_back(linear(pos(rng), pos(rng), 0, vel(rng), vel(rng), vel(rng) + 20 * (i % 3 - 1)));
+  simulate_and_judge(pts, 3, Dyadic(16));
+}
+
+TEST(KineticHull, SeveralPointsCrossOnePlaneInOneInterval) {
+  // A big tetrahedron, and points on a plane z = 10 moving together through z = 0 at t = 1 + tiny
+  // offsets (within one lattice interval), with small distinct horizontal drifts.
+  std::vector<MovingPoint> pts{linear(-1000, -1000, -1000, 0, 0, 0), linear(1000, -1000, -1000, 0, 0, 0),
+                               linear(0, 1000, -1000, 0, 0, 0), linear(0, 0, 1000, 0, 0, 1)};
+  const long long xs[8] = {-310, -170, -60, 30, 140, 250, -220, 90}, ys[8] = {13, -170, 210, -40, 95, -260, 170, -5};
+  for (int i = 0; i < 8; ++i) pts.push_back(linear(xs[i], ys[i], 2000 + 3 * i * i, 7 * i - 25, 11 - 5 * i, -2000));
+  EXPECT_GE(simulate_and_judge(pts, 2, Dyadic(4)).max_batch, 2);
+}
+
+TEST(KineticHull, FourPointsCoplanarAtALatticePoint) {
+  // Points 0..3 on the plane x = 0 exactly at t = 1 (a lattice point), apart before and after.
+  std::vector<MovingPoint> pts{linear(-5, 0, 0, 5, 0, 0),    linear(5, 40, 0, -5, 0, 0),  linear(-10, 0, 40, 10, 1, 0),
+                               linear(10, 30, 30, -10, 0, 1), linear(100, -100, -100, 0, 0, 0), linear(-100, 100, -100, 0, 0, 0),
+                               linear(-100, -100, 100, 0, 1, 0), linear(100, 100, 100, 1, 0, 0), linear(0, 200, 0, 0, -3, 2)};
+  EXPECT_GE(simulate_and_judge(pts, 3, Dyadic(4)).events, 1);
+}
+
+TEST(KineticHull, RefusesIdenticalTrajectories) {
+  std::vector<MovingPoint> pts = random_motions(8, 3);
+  pts.push_back(pts[2]);
+  kinetic::MotionSimulator sim(10, Dyadic(4));
+  try {
+    KineticHull kh(pts, sim);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("points 2 and 8 have identical trajectories"), std::string::npos) << e.what();
+  }
+}
+
+TEST(KineticHull, RefusesIdenticallyCoplanarPoints) {
+  // Four points of the plane z = 0 that stay in it (vz = 0), plus points off it: some certificate
+  // on the four is identically zero.
+  std::vector<MovingPoint> pts{linear(0, 0, 0, 1, 0, 0),   linear(50, 0, 0, 0, 1, 0),   linear(0, 50, 0, 1, 1, 0),
+                               linear(20, 20, 0, -1, 0, 0), linear(10, 10, 80, 0, 0, 1), linear(10, 10, -80, 0, 0, -1)};
+  kinetic::MotionSimulator sim(10, Dyadic(4));
+  bool refused = false;
+  for (std::uint64_t seed = 1; seed <= 8 && !refused; ++seed) {
+    try {
+      kinetic::MotionSimulator s(10, Dyadic(4));
+      KineticHull kh(pts, s, seed);
+    } catch (const InputError& e) {
+      refused = std::string(e.what()).find("stay coplanar for all time") != std::string::npos;
+      EXPECT_TRUE(refused) << e.what();
+    }
+  }
+  EXPECT_TRUE(refused);
+}
+
+TEST(HullJudge, CertificateCatchesAWrongFacet) {
+  auto pts = random_motions(12, 5);
+  auto facets = static_hull_before(pts, Dyadic(0));
+  EXPECT_EQ(hull_certificate_failure(pts, Dyadic(0), facets), "");
+  auto flipped = facets;
+  std::swap(flipped[0][1], flipped[0][2]);
+  EXPECT_NE(hull_certificate_failure(pts, Dyadic(0), flipped), "");
+  EXPECT_NE(hull_certificate_failure(pts, Dyadic(1000), facets), "");  // the points moved
+}
+
+TEST(HullMotions, ParsesAndRefuses) {
+  std::istringstream ok("# x y z vx vy vz\n1 2 3 4 5 6\n\n-7 8 9 0 0 123456789012345678901234567890\n");
+  auto pts = parse_hull_motions(ok, "f");
+  ASSERT_EQ(pts.size(), 2u);
+  EXPECT_EQ(pts[1][2], Polynomial(std::vector<Integer>{Integer(9), exact::parse_integer("123456789012345678901234567890")}));
+  std::istringstream bad("1 2 3 4 5\n");
+  EXPECT_THROW(parse_hull_motions(bad, "f"), InputError);
+  std::istringstream bad2("1 2 3 4 5 x\n");
+  try {
+    parse_hull_motions(bad2, "g");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("g:1"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace kmr::hull
