@@ -54,6 +54,13 @@ std::vector<Line> content_lines(const std::string& text) {
   return out;
 }
 
+// Digits read in base 10 by GMP itself (Boost's string constructor reads a leading 0 as octal).
+Z decimal(const std::string& digits) {
+  Z v;
+  FUZZ_CHECK(mpz_set_str(v.backend().data(), digits.c_str(), 10) == 0, "mpz_set_str: " + digits);
+  return v;
+}
+
 bool all_digits(const std::string& w) {
   for (char c : w)
     if (c < '0' || c > '9') return false;
@@ -64,7 +71,7 @@ bool all_digits(const std::string& w) {
 bool integer(const std::string& w, Z& v) {
   std::string d = (!w.empty() && (w[0] == '+' || w[0] == '-')) ? w.substr(1) : w;
   if (d.empty() || !all_digits(d)) return false;
-  v = Z(d);
+  v = decimal(d);
   if (w[0] == '-') v = -v;
   return true;
 }
@@ -87,7 +94,7 @@ bool lattice_time(const std::string& w, long long bits, Q& v) {
     exp10 += x.convert_to<long long>();
   }
   if (exp10 > 100000 || exp10 < -100000) return false;
-  Z n(whole + frac);
+  Z n = decimal(whole + frac);
   if (negative) n = -n;
   Z ten = boost::multiprecision::pow(Z(10), static_cast<unsigned>(exp10 < 0 ? -exp10 : exp10));
   v = exp10 >= 0 ? Q(n * ten) : Q(n, ten);

@@ -15,6 +15,7 @@
 // Inputs the library refuses (InputError: points closer than its depth limit, ...) end the case.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <iterator>
 #include <boost/multiprecision/gmp.hpp>
 #include <set>
@@ -82,75 +83,102 @@ bool well_spaced_2d(const std::vector<Point<2>>& M, std::size_t vi, const Q& rho
 }
 
 // D = 3: Vor(v) ∩ [0,1]³ as a vertex set, clipped by the bisector half-spaces {x : a·x ≤ b} one at a
-// time. Each vertex carries the planes tight at it (0..5 the cube's faces, 6 + j the bisector of
-// M[j]). A new vertex of a cut lies on an old edge: two old vertices on opposite sides that share two
-// tight planes (distinct planes tight at one point meet in a line, so the segment between them lies
-// on that line inside the cell, and its crossing of the cut is a point of the new cell on three
-// independent planes). Extra points of this kind are harmless (they are in the cell, and the
+// time. Each vertex carries the planes tight at it (0..5 the cube's faces, then the bisectors in the
+// order cut). A new vertex of a cut lies on an old edge: two old vertices on opposite sides that
+// share two tight planes (distinct planes tight at one point meet in a line, so the segment between
+// them lies on that line inside the cell, and its crossing of the cut is a point of the new cell on
+// three independent planes). Extra points of this kind are harmless (they are in the cell, and the
 // farthest point of a polytope from v is a vertex); none is missed (every new vertex is the crossing
 // of an edge whose ends are old vertices). So the radius is exact.
+// Arithmetic: every double of M times 2^S is an integer (S from frexp), so planes have integer
+// coefficients and vertices are primitive homogeneous integer vectors (X, Y, Z, W), W > 0 (unique,
+// so equal points have equal vectors); no rationals, one gcd per new vertex.
+using Z = boost::multiprecision::number<boost::multiprecision::gmp_int, boost::multiprecision::et_off>;
+using H = std::array<Z, 4>;  // X, Y, Z, W
 struct Vertex3 {
-  std::array<Q, 3> x;
+  H x;
   std::vector<int> tight;  // sorted plane ids
 };
 struct Plane3 {
-  std::array<Q, 3> a;
-  Q b;
-  Q eval(const std::array<Q, 3>& x) const { return a[0] * x[0] + a[1] * x[1] + a[2] * x[2] - b; }
+  std::array<Z, 3> a;
+  Z b;
+  Z eval(const H& x) const { return a[0] * x[0] + a[1] * x[1] + a[2] * x[2] - b * x[3]; }
 };
 
 bool well_spaced_3d(const std::vector<Point<3>>& M, std::size_t vi, const Q& rho2, std::string& why) {
-  const Point<3>& v = M[vi];
-  std::array<Q, 3> vq{Q(v[0]), Q(v[1]), Q(v[2])};
+  int S = 0;
+  for (const auto& p : M)
+    for (double c : p)
+      if (c != 0) {
+        int e;
+        std::frexp(c, &e);
+        S = std::max(S, 53 - e);
+      }
+  auto scaled = [&](double c) {
+    Z z;
+    mpz_set_d(z.backend().data(), std::ldexp(c, S));  // exact: an integral double
+    return z;
+  };
+  std::vector<std::array<Z, 3>> P;
+  for (const auto& p : M) P.push_back({scaled(p[0]), scaled(p[1]), scaled(p[2])});
+  const auto& v = P[vi];
+  const Z L = Z(1) << static_cast<unsigned>(S);
   std::vector<Plane3> planes;
-  for (int k = 0; k < 3; ++k) {  // −x_k ≤ 0 (id 2k), x_k ≤ 1 (id 2k + 1)
-    Plane3 lo{{Q(0), Q(0), Q(0)}, Q(0)}, hi{{Q(0), Q(0), Q(0)}, Q(1)};
-    lo.a[k] = -1;
-    hi.a[k] = 1;
+  for (int k = 0; k < 3; ++k) {  // −x_k ≤ 0 (id 2k), x_k ≤ L (id 2k + 1)
+    Plane3 lo{{Z(0), Z(0), Z(0)}, Z(0)}, hi{{Z(0), Z(0), Z(0)}, L};
+    lo.a[static_cast<std::size_t>(k)] = -1;
+    hi.a[static_cast<std::size_t>(k)] = 1;
     planes.push_back(lo);
     planes.push_back(hi);
   }
   std::vector<Vertex3> cell;
   for (int c = 0; c < 8; ++c) {
     Vertex3 w;
+    w.x[3] = 1;
     for (int k = 0; k < 3; ++k) {
       int bit = (c >> k) & 1;
-      w.x[k] = Q(bit);
+      w.x[static_cast<std::size_t>(k)] = bit ? L : Z(0);
       w.tight.push_back(2 * k + bit);
     }
     std::sort(w.tight.begin(), w.tight.end());
     cell.push_back(w);
   }
+  auto d2 = [&](const std::array<Z, 3>& q) {
+    Z s(0);
+    for (std::size_t k = 0; k < 3; ++k) s += (q[k] - v[k]) * (q[k] - v[k]);
+    return s;
+  };
   std::vector<std::size_t> order;
   for (std::size_t j = 0; j < M.size(); ++j)
     if (j != vi) order.push_back(j);
-  std::vector<Q> d2(M.size());
-  for (std::size_t j : order) d2[j] = dist2<3>(v, M[j]);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return d2[a] < d2[b]; });
-  Q nn2 = d2[order.front()];
-  auto radius2 = [&] {
-    Q r(0);
+  std::vector<Z> dist(M.size());
+  for (std::size_t j : order) dist[j] = d2(P[j]);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return dist[a] < dist[b]; });
+  const Z nn2 = dist[order.front()];
+  auto radius2 = [&] {  // max |w − v|² as num / den
+    Z num(0), den(1);
     for (const auto& w : cell) {
-      Q s(0);
-      for (int k = 0; k < 3; ++k) s += (w.x[k] - vq[k]) * (w.x[k] - vq[k]);
-      r = std::max(r, s);
+      Z s(0);
+      for (std::size_t k = 0; k < 3; ++k) s += (w.x[k] - v[k] * w.x[3]) * (w.x[k] - v[k] * w.x[3]);
+      Z dd = w.x[3] * w.x[3];
+      if (s * den > num * dd) num = s, den = dd;
     }
-    return r;
+    return std::pair<Z, Z>{num, den};
   };
-  Q r2 = radius2();
+  auto r2 = radius2();
   for (std::size_t j : order) {
-    if (d2[j] >= 4 * r2) break;  // the bisector is at distance ≥ |q−v|/2 ≥ the cell's radius: no cut
+    if (dist[j] * r2.second >= 4 * r2.first) break;  // the bisector is at distance ≥ |q−v|/2 ≥ the cell's radius
     Plane3 h;
-    Q qq(0), vv(0);
-    for (int k = 0; k < 3; ++k) {
-      h.a[k] = Q(M[j][k]) - vq[k];
-      qq += Q(M[j][k]) * Q(M[j][k]);
-      vv += vq[k] * vq[k];
+    Z qq(0), vv(0);
+    for (std::size_t k = 0; k < 3; ++k) {
+      h.a[k] = 2 * (P[j][k] - v[k]);
+      qq += P[j][k] * P[j][k];
+      vv += v[k] * v[k];
     }
-    h.b = (qq - vv) / 2;
+    h.b = qq - vv;
     int id = static_cast<int>(planes.size());
     planes.push_back(h);
-    std::vector<Q> f;
+    std::vector<Z> f;
     for (const auto& w : cell) f.push_back(h.eval(w.x));
     std::vector<Vertex3> out;
     for (std::size_t p = 0; p < cell.size(); ++p)
@@ -167,9 +195,11 @@ bool well_spaced_3d(const std::vector<Point<3>>& M, std::size_t vi, const Q& rho
         std::set_intersection(cell[p].tight.begin(), cell[p].tight.end(), cell[q].tight.begin(), cell[q].tight.end(),
                               std::back_inserter(common));
         if (common.size() < 2) continue;
-        Q t = f[p] / (f[p] - f[q]);
-        Vertex3 w;
-        for (int k = 0; k < 3; ++k) w.x[k] = cell[p].x[k] + t * (cell[q].x[k] - cell[p].x[k]);
+        Vertex3 w;  // f_q·p − f_p·q: on the cut, W > 0 (f_q > 0 > f_p)
+        for (std::size_t k = 0; k < 4; ++k) w.x[k] = f[q] * cell[p].x[k] - f[p] * cell[q].x[k];
+        Z g = w.x[3];
+        for (std::size_t k = 0; k < 3; ++k) g = boost::multiprecision::gcd(g, w.x[k]);
+        for (auto& c : w.x) c /= g;
         auto same = std::find_if(out.begin(), out.end(), [&](const Vertex3& o) { return o.x == w.x; });
         if (same != out.end()) continue;  // already a vertex
         out.push_back(w);
@@ -190,8 +220,11 @@ bool well_spaced_3d(const std::vector<Point<3>>& M, std::size_t vi, const Q& rho
     cell = std::move(out);
     r2 = radius2();
   }
-  if (r2 > rho2 * nn2) {
-    why = "vertex " + std::to_string(vi) + " has a Voronoi cell of radius² " + r2.str() + " > ρ²·NN² = " + (rho2 * nn2).str();
+  // radius² = num / den (scaled by 4^S like nn2); well-spaced iff num·q ≤ p·nn2·den for ρ² = p/q.
+  Z pn(boost::multiprecision::numerator(rho2).str()), pd(boost::multiprecision::denominator(rho2).str());
+  if (r2.first * pd > pn * nn2 * r2.second) {
+    why = "vertex " + std::to_string(vi) + " has a Voronoi cell of radius² " + Q(r2.first.str() + "/" + r2.second.str()).str() +
+          " > ρ²·NN² = " + Q((pn * nn2).str() + "/" + pd.str()).str() + " (both ×4^" + std::to_string(S) + ")";
     return false;
   }
   return true;
