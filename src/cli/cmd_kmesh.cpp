@@ -27,35 +27,13 @@ namespace {
 
 using namespace kmr::kmesh;
 
-struct Trajectory {
-  exact::Integer x, y, vx, vy;
-  std::size_t line;
-};
+using Trajectory = KmeshTrajectory;
 
-// A decimal integer of a kmesh file, or an error naming its place.
-exact::Integer integer_at(const std::string& s, const std::string& where) {
-  try {
-    return exact::parse_integer(s);
-  } catch (const InputError&) {
-    throw InputError(where + ": '" + s + "' is not a decimal integer");
-  }
-}
-
+// The point file, parsed by cli/formats (the entry point the fuzz harness kmesh_files calls).
 std::vector<Trajectory> read_points(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw InputError("cannot read file '" + path + "'");
-  std::vector<Trajectory> out;
-  for (auto& [n, t] : read_lines(in)) {
-    std::string where = path + ":" + std::to_string(n);
-    if (t.size() != 2 && t.size() != 4)
-      throw InputError(where + ": expected 'x y' or 'x y vx vy', got " + std::to_string(t.size()) + " values");
-    auto num = [&](const std::string& x) { return integer_at(x, where); };
-    Trajectory p{num(t[0]), num(t[1]), t.size() == 4 ? num(t[2]) : exact::Integer(0),
-                 t.size() == 4 ? num(t[3]) : exact::Integer(0), n};
-    out.push_back(p);
-  }
-  if (out.empty()) throw InputError(path + ": no input point");
-  return out;
+  return parse_kmesh_points(in, path);
 }
 
 std::string num(double x) {
@@ -92,18 +70,7 @@ int kmesh_command(const Argv& argv) {
   }
   if (args.positional().size() != 1) throw InputError("kmr kmesh needs exactly one input FILE (see --help)");
   long long bits = args.integer("lattice-bits", 10, 0, 62);
-  auto lattice_time = [&](const std::string& text, const std::string& where) {
-    Dyadic t;
-    try {
-      t = Dyadic::parse(text);
-    } catch (const InputError&) {
-      throw InputError(where + ": '" + text + "' is not a dyadic decimal time");
-    }
-    if (t.sign() < 0) throw InputError(where + ": time " + text + " is negative");
-    if (!t.shifted(bits).is_integer())
-      throw InputError(where + ": time " + text + " is not a multiple of the lattice step 2^-" + std::to_string(bits));
-    return t;
-  };
+  auto lattice_time = [&](const std::string& text, const std::string& where) { return parse_kmesh_time(text, where, bits); };
   Dyadic until = args.value("until") ? lattice_time(*args.value("until"), "--until") : Dyadic(0);
   const std::string& path = args.positional()[0];
   auto traj = read_points(path);
@@ -117,13 +84,8 @@ int kmesh_command(const Argv& argv) {
   if (auto uf = args.value("updates")) {
     std::ifstream in(*uf);
     if (!in) throw InputError("cannot read file '" + *uf + "'");
-    for (auto& [n, t] : read_lines(in)) {
-      std::string where = *uf + ":" + std::to_string(n);
-      if (t.size() != 6 || (t[1] != "+" && t[1] != "-"))
-        throw InputError(where + ": expected 'T + x y vx vy' or 'T - x y vx vy'");
-      auto num = [&](const std::string& x) { return integer_at(x, where); };
-      updates.push_back({lattice_time(t[0], where), t[1] == "+", {num(t[2]), num(t[3]), num(t[4]), num(t[5])}, where});
-    }
+    for (auto& u : parse_kmesh_updates(in, *uf, bits))
+      updates.push_back({u.t, u.insert, {u.p.x, u.p.y, u.p.vx, u.p.vy}, u.where});
     std::stable_sort(updates.begin(), updates.end(), [](auto& a, auto& b) { return a.t < b.t; });
     for (auto& u : updates)
       if (u.t > until) throw InputError(u.where + ": update at time " + u.t.to_decimal() + " is after --until " + until.to_decimal());

@@ -123,4 +123,55 @@ std::vector<std::pair<std::size_t, std::vector<std::string>>> read_lines(std::is
   return out;
 }
 
+
+namespace {
+// A decimal integer of a kmesh file, or an error naming its place.
+exact::Integer kmesh_integer(const std::string& s, const std::string& where) {
+  try {
+    return exact::parse_integer(s);
+  } catch (const InputError&) {
+    throw InputError(where + ": '" + s + "' is not a decimal integer");
+  }
+}
+}  // namespace
+
+std::vector<KmeshTrajectory> parse_kmesh_points(std::istream& in, const std::string& name) {
+  std::vector<KmeshTrajectory> out;
+  for (auto& [n, t] : read_lines(in)) {
+    std::string where = name + ":" + std::to_string(n);
+    if (t.size() != 2 && t.size() != 4)
+      throw InputError(where + ": expected 'x y' or 'x y vx vy', got " + std::to_string(t.size()) + " values");
+    auto num = [&](const std::string& x) { return kmesh_integer(x, where); };
+    out.push_back({num(t[0]), num(t[1]), t.size() == 4 ? num(t[2]) : exact::Integer(0),
+                   t.size() == 4 ? num(t[3]) : exact::Integer(0), n});
+  }
+  if (out.empty()) throw InputError(name + ": no input point");
+  return out;
+}
+
+exact::Dyadic parse_kmesh_time(const std::string& text, const std::string& where, long long bits) {
+  exact::Dyadic t;
+  try {
+    t = exact::Dyadic::parse(text);
+  } catch (const InputError&) {
+    throw InputError(where + ": '" + text + "' is not a dyadic decimal time");
+  }
+  if (t.sign() < 0) throw InputError(where + ": time " + text + " is negative");
+  if (!t.shifted(bits).is_integer())
+    throw InputError(where + ": time " + text + " is not a multiple of the lattice step 2^-" + std::to_string(bits));
+  return t;
+}
+
+std::vector<KmeshUpdate> parse_kmesh_updates(std::istream& in, const std::string& name, long long bits) {
+  std::vector<KmeshUpdate> out;
+  for (auto& [n, t] : read_lines(in)) {
+    std::string where = name + ":" + std::to_string(n);
+    if (t.size() != 6 || (t[1] != "+" && t[1] != "-"))
+      throw InputError(where + ": expected 'T + x y vx vy' or 'T - x y vx vy'");
+    auto num = [&](const std::string& x) { return kmesh_integer(x, where); };
+    out.push_back({parse_kmesh_time(t[0], where, bits), t[1] == "+", {num(t[2]), num(t[3]), num(t[4]), num(t[5]), n}, where});
+  }
+  return out;
+}
+
 }  // namespace kmr::cli

@@ -47,4 +47,25 @@ template <std::size_t D>
 std::vector<WsUpdate<D>> parse_ws_updates(std::istream& in, const std::string& name,
                                           const std::vector<wellspaced::Point<D>>& input);
 
+// `kmr kmesh` FILE: one trajectory per line, 'x y vx vy' or 'x y' (decimal integers of any size;
+// vx = vy = 0 when omitted), at least one. Identical or colliding trajectories are the command's check.
+struct KmeshTrajectory {
+  exact::Integer x, y, vx, vy;
+  std::size_t line;
+};
+std::vector<KmeshTrajectory> parse_kmesh_points(std::istream& in, const std::string& name);
+
+// A `kmr kmesh` time (--until, update times): a dyadic decimal T ≥ 0 that is a multiple of 2^-bits.
+exact::Dyadic parse_kmesh_time(const std::string& text, const std::string& where, long long bits);
+
+// `kmr kmesh --updates FILE`: 'T + x y vx vy' (insert) / 'T - x y vx vy' (delete), in file order
+// (membership and the order of times are the command's checks).
+struct KmeshUpdate {
+  exact::Dyadic t;
+  bool insert;
+  KmeshTrajectory p;
+  std::string where;  // "file:line"
+};
+std::vector<KmeshUpdate> parse_kmesh_updates(std::istream& in, const std::string& name, long long bits);
+
 }  // namespace kmr::cli
