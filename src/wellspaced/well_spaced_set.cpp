@@ -12,6 +12,7 @@
 #include <set>
 #include <unordered_map>
 #include <algorithm>
+#include <bit>
 
 #include "exact/error.hpp"
 #include "wellspaced/polytope.hpp"
@@ -668,7 +669,96 @@ struct WellSpacedSet<D>::Impl {
         }
         if (in_region(w)) return w;
       }
-      throw ContractError("no double-precision point in the picking region: the cell exceeds the ρ-ball by less than the double spacing");
+      // 4. the doubles of the cell's bounding box (within β·NN of v), in Chebyshev rings of
+      // growing radius m = 1, 2, 4, … around p in the index space of doubles (the bit patterns of
+      // the doubles in [0,1] are consecutive integers), while (2m+1)^D ≤ 2^20. When the rings
+      // cover the box, a miss proves that no double lies in the picking region.
+      Enumeration en = pick_by_enumeration(v, p, in_region, P, std::sqrt(params.beta * params.beta * n2));
+      if (en.w) return *en.w;
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "|vv'| = %.3g, %llu doubles tried%s", std::sqrt(n2),
+                    static_cast<unsigned long long>(en.tried),
+                    en.complete ? ": none lies in the picking region" : " near the picking region, none in it");
+      throw ContractError("no double-precision Steiner vertex for the fill of v = (" + fmt_point<D>(v) + "), " + buf +
+                          " (Steiner vertices are doubles; near-duplicate inputs need finer ones: spec/wellspaced.md, issue 11)");
+    }
+  }
+  // Step 4 of pick (exact tier): the first double w (in ring order around p, then offsets in
+  // lexicographic order) with in_region(w) among the doubles of the box of P (relative to v)
+  // ∩ [v − B, v + B] ∩ [0,1]^D. complete: the rings covered that box (so a miss is a proof).
+  struct Enumeration {
+    std::optional<Pt> w;
+    bool complete = false;
+    std::uint64_t tried = 0;
+  };
+  template <class InRegion>
+  static Enumeration pick_by_enumeration(const Pt& v, const std::array<Q, D>& p, const InRegion& in_region,
+                                         const Polytope<D, Q>& P, double B) {
+    auto idx = [](double x) { return static_cast<std::int64_t>(std::bit_cast<std::uint64_t>(x)); };
+    auto at = [](std::int64_t i) { return std::bit_cast<double>(static_cast<std::uint64_t>(i)); };
+    auto down = [](const Q& x) {  // the largest double ≤ x
+      double c = x.template convert_to<double>();
+      return Q(c) > x ? std::nextafter(c, -2.0) : c;
+    };
+    auto up = [](const Q& x) {  // the smallest double ≥ x
+      double c = x.template convert_to<double>();
+      return Q(c) < x ? std::nextafter(c, 2.0) : c;
+    };
+    Enumeration out;
+    std::array<std::int64_t, D> lo, hi, c;
+    const Q b = Q(B) * Q(1 + 0x1p-20);  // B is a double estimate of β·NN; widened
+    for (std::size_t i = 0; i < D; ++i) {
+      Q mn = P.v.front().x[i], mx = mn;
+      for (const auto& x : P.v) {
+        if (x.x[i] < mn) mn = x.x[i];
+        if (x.x[i] > mx) mx = x.x[i];
+      }
+      if (mn < -b) mn = -b;
+      if (mx > b) mx = b;
+      lo[i] = idx(std::max(0.0, up(Q(v[i]) + mn)));
+      hi[i] = idx(std::min(1.0, down(Q(v[i]) + mx)));
+      if (lo[i] > hi[i]) {
+        out.complete = true;  // the box holds no double
+        return out;
+      }
+      c[i] = std::clamp(idx(std::clamp(down(p[i]), 0.0, 1.0)), lo[i], hi[i]);
+    }
+    std::int64_t prev = -1;  // the rings of Chebyshev radius ≤ prev are done
+    for (std::int64_t m = 1;; m *= 2) {
+      double count = 1;
+      for (std::size_t i = 0; i < D; ++i) count *= double(2 * m + 1);
+      if (count > 0x1p20) return out;
+      bool covers = true;
+      for (std::size_t i = 0; i < D; ++i) covers = covers && c[i] - m <= lo[i] && c[i] + m >= hi[i];
+      std::array<std::int64_t, D> off;
+      off.fill(-m);
+      for (;;) {
+        std::int64_t cheb = 0;
+        bool inside = true;
+        Pt w;
+        for (std::size_t i = 0; i < D; ++i) {
+          cheb = std::max<std::int64_t>(cheb, off[i] < 0 ? -off[i] : off[i]);
+          const std::int64_t j = c[i] + off[i];
+          inside = inside && j >= lo[i] && j <= hi[i];
+          if (inside) w[i] = at(j);
+        }
+        if (cheb > prev && inside) {
+          ++out.tried;
+          if (in_region(w)) {
+            out.w = w;
+            return out;
+          }
+        }
+        std::size_t i = 0;
+        while (i < D && off[i] == m) off[i++] = -m;
+        if (i == D) break;
+        ++off[i];
+      }
+      if (covers) {
+        out.complete = true;
+        return out;
+      }
+      prev = m;
     }
   }
   // ⌊x / 2^e⌋ as a double, for |x / 2^e| < 2^52 (exact there).
