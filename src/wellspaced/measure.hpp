@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "exact/dyadic.hpp"
+#include "geometry/point.hpp"
 #include "wellspaced/well_spaced_set.hpp"
 
 namespace kmr::wellspaced {
@@ -90,18 +91,16 @@ std::set<Point<D>> vertices_of_changed_operations(const std::vector<GraphOperati
 // Exact squared distance of two points with double (dyadic) coordinates.
 template <std::size_t D>
 exact::Dyadic dist2_exact(const Point<D>& a, const Point<D>& b) {
-  exact::Dyadic s;
+  geometry::Point<D, exact::Dyadic> x, y;
   for (std::size_t i = 0; i < D; ++i) {
-    exact::Dyadic d = exact::Dyadic::from_double(a[i]) - exact::Dyadic::from_double(b[i]);
-    s += d * d;
+    x[i] = exact::Dyadic::from_double(a[i]);
+    y[i] = exact::Dyadic::from_double(b[i]);
   }
-  return s;
+  return geometry::dist2(x, y);
 }
 template <std::size_t D>
 double dist2_approx(const Point<D>& a, const Point<D>& b) {
-  double s = 0;
-  for (std::size_t i = 0; i < D; ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
-  return s;
+  return geometry::dist2(a, b);
 }
 
 // NN_M(v) for every v of M, squared and exact: a sweep in x_1 finds the candidates in doubles (a

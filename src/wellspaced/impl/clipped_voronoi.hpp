@@ -101,7 +101,7 @@ auto WellSpacedSet<D>::Impl::meets_certificate_region(const Polytope<D, NT>& C, 
         else if (c.x[i] > hi) g = c.x[i] - hi;
         g2 += g * g;
       }
-      return g2 - dot<NT, D>(c.x, c.x);
+      return g2 - dot(c.x, c.x);
     });
     if (sg <= 0) return true;
   }
@@ -166,7 +166,7 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
     bool have = false;
     for (const Cand& c : cand)
       if (c.d.lo() <= best) {
-        NT e = dist2<NT, D>(rel(c.u), vq);
+        NT e = dist2(rel(c.u), vq);
         if (!have || e < nn2 || (e == nn2 && c.u < res.nn)) {
           nn2 = e;
           res.nn = c.u;
@@ -207,7 +207,7 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
           b.lo[i] = x.lo();
           b.hi[i] = x.hi();
         }
-        IntervalNT r = dist2<IntervalNT, D>(c.xi, vi);
+        IntervalNT r = dist2(c.xi, vi);
         b.r_lo = r.lo();
         b.r_hi = r.hi();
         vb.push_back(b);
@@ -233,7 +233,7 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
         if (!(u == v) && vtx.at(u).created < t) here.push_back(u);
       std::sort(here.begin(), here.end());
       for (const Pt& u : here) {
-        IntervalNT d = dist2<IntervalNT, D>(point_in<IntervalNT, D>(u), vabs);
+        IntervalNT d = dist2(point_in<IntervalNT, D>(u), vabs);
         cand.push_back({d.approx(), d, u});
         best = std::min(best, d.hi());
       }
@@ -254,7 +254,7 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
     if (meets(s)) res.reads.push_back(s);
   std::sort(res.reads.begin(), res.reads.end());
   // exact decision: u ∈ CV iff the face of C on the bisector of v, u has a point within β·NN
-  NT r2 = sq<NT>(params.beta) * dist2<NT, D>(rel(res.nn), vq);
+  NT r2 = sq<NT>(params.beta) * dist2(rel(res.nn), vq);
   const double r2_hi = exact::enclose(r2).hi();
   for (std::size_t i = 0; i < cand.size(); ++i) {
     if (cidx[i] < 0 || cand[i].d.lo() > 4 * r2_hi) continue;  // the face is beyond β·NN

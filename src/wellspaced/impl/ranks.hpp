@@ -43,9 +43,9 @@ auto WellSpacedSet<D>::Impl::rank_of(const Q& d2) -> int {
 template <std::size_t D>
 auto WellSpacedSet<D>::Impl::rank_between(const Pt& a, const Pt& b) -> int {
   try {
-    return rank_in<IntervalNT>(dist2<IntervalNT, D>(point_in<IntervalNT, D>(a), point_in<IntervalNT, D>(b)));
+    return rank_in<IntervalNT>(dist2(point_in<IntervalNT, D>(a), point_in<IntervalNT, D>(b)));
   } catch (const Uncertain&) {
-    return rank_of(dist2<Q, D>(to_q<D>(a), to_q<D>(b)));
+    return rank_of(dist2(to_q<D>(a), to_q<D>(b)));
   }
 }
 

@@ -34,19 +34,18 @@ auto WellSpacedSet<D>::Impl::pick(const std::array<NT, D>& vq, const Pt& v, cons
   const typename Polytope<D, NT>::Vert* far = nullptr;
   NT fd = -1;
   for (const auto& x : P.v) {
-    NT d = dist2<NT, D>(x.x, vq);
+    NT d = dist2(x.x, vq);
     if (d > fd || (d == fd && x.x < far->x)) {
       fd = d;
       far = &x;
     }
   }
   const NT lo2 = sq<NT>(params.rho) * nn2, bmax = sq<NT>(params.beta) * nn2;
-  double n2 = 0;
-  for (std::size_t i = 0; i < D; ++i) n2 += (nn[i] - v[i]) * (nn[i] - v[i]);
+  const double n2 = dist2(nn, v);  // a double estimate of NN² (the candidates are verified exactly)
   const double l = params.rho * params.rho * n2;
   auto in_region = [&](const Pt& w) {
     auto wq = relative_to<NT, D>(w, v);
-    NT d = dist2<NT, D>(wq, vq);
+    NT d = dist2(wq, vq);
     return !(d < lo2) && d < bmax && P.contains(wq);
   };
   // the candidates along the ray toward x* truncated to the grid 2^(ℓ(r*) − k)
@@ -55,8 +54,7 @@ auto WellSpacedSet<D>::Impl::pick(const std::array<NT, D>& vq, const Pt& v, cons
     const int e = ell(r_far) - k;
     Pt xs;
     for (std::size_t i = 0; i < D; ++i) xs[i] = v[i] + std::ldexp(floor_div_pow2<NT>(far->x[i], e), e);
-    double F = 0;
-    for (std::size_t i = 0; i < D; ++i) F += (xs[i] - v[i]) * (xs[i] - v[i]);
+    const double F = dist2(xs, v);
     if (!(F > 0)) return false;
     const double h = std::min(params.beta * params.beta * n2, F);
     for (std::size_t j = 0; j < nf; ++j) {
@@ -239,7 +237,7 @@ auto WellSpacedSet<D>::Impl::fill_tier(const Pt& v, const CVResult& cv) -> std::
   }
   Polytope<D, NT> P = Polytope<D, NT>::box(lo, hi);  // Vor_CV(v) ∩ [0,1]^D
   for (const Pt& u : cv.cv) P.clip(bisector<D, NT>(vq, rel(u)));
-  const NT nn2 = dist2<NT, D>(rel(cv.nn), vq);
+  const NT nn2 = dist2(rel(cv.nn), vq);
   const NT lim = sq<NT>(params.rho) * nn2;
   std::vector<Pt> out;
   while (P.some_vertex_beyond(vq, lim)) {  // v is not ρ-well-spaced
