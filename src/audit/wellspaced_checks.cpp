@@ -190,14 +190,14 @@ Verdict l3315(const Options& o) {
     for (int k : ks) {
       WellSpacedSet<2> ws(base);
       Point<2> q = close_to(base[0], k);
-      auto G = ws.canonical_graph();
+      auto G = ws.computation_graph();
       auto M = ws.vertices();
       ws.insert(q);
-      auto G2 = ws.canonical_graph();
+      auto G2 = ws.computation_graph();
       auto M2 = ws.vertices();
       ws.erase(q);
       AffectedRatio ins = affected_ratio<2>(G, M, G2, M2, q);
-      AffectedRatio del = affected_ratio<2>(G2, M2, ws.canonical_graph(), ws.vertices(), q);
+      AffectedRatio del = affected_ratio<2>(G2, M2, ws.computation_graph(), ws.vertices(), q);
       double r = std::max(ins.max_ratio, del.max_ratio);
       if (k == ks.front()) at_small_delta = r;
       if (first == 0) first = r;

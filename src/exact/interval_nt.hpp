@@ -51,12 +51,21 @@ class IntervalNT {
 
   friend IntervalNT operator-(const IntervalNT& a) { return IntervalNT(-a.hi_, -a.lo_); }
   friend IntervalNT operator+(const IntervalNT& a, const IntervalNT& b) {
+    if (a.is_point() && b.is_point()) {  // one TwoSum for both ends
+      double s = a.lo_ + b.lo_, bb = s - a.lo_, e = (a.lo_ - (s - bb)) + (b.lo_ - bb);
+      return IntervalNT(e < 0 ? step(s, -1) : s, e > 0 ? step(s, 1) : s);
+    }
     return IntervalNT(sum(a.lo_, b.lo_, -1), sum(a.hi_, b.hi_, 1));
   }
   friend IntervalNT operator-(const IntervalNT& a, const IntervalNT& b) { return a + (-b); }
   friend IntervalNT operator*(const IntervalNT& a, const IntervalNT& b) {
     if (a.is_point() && b.is_point()) return IntervalNT(prod(a.lo_, b.lo_, -1), prod(a.lo_, b.lo_, 1));
+    // neither operand straddles 0: the extreme products are known from the signs (rounding is
+    // monotone, so these are the min and max over the four corner products)
     if (a.lo_ >= 0 && b.lo_ >= 0) return IntervalNT(prod(a.lo_, b.lo_, -1), prod(a.hi_, b.hi_, 1));
+    if (a.hi_ <= 0 && b.hi_ <= 0) return IntervalNT(prod(a.hi_, b.hi_, -1), prod(a.lo_, b.lo_, 1));
+    if (a.lo_ >= 0 && b.hi_ <= 0) return IntervalNT(prod(a.hi_, b.lo_, -1), prod(a.lo_, b.hi_, 1));
+    if (a.hi_ <= 0 && b.lo_ >= 0) return IntervalNT(prod(a.lo_, b.hi_, -1), prod(a.hi_, b.lo_, 1));
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (double x : {a.lo_, a.hi_})
       for (double y : {b.lo_, b.hi_}) {

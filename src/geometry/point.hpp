@@ -16,4 +16,22 @@ Point<D, NT> operator-(const Point<D, NT>& a, const Point<D, NT>& b) {
   return r;
 }
 
+// Σ a_i·b_i and |a − b|² in NT's arithmetic, summed in coordinate order (for doubles: the same
+// rounding as any loop that sums in that order).
+template <std::size_t D, class NT>
+NT dot(const Point<D, NT>& a, const Point<D, NT>& b) {
+  NT s = 0;
+  for (std::size_t i = 0; i < D; ++i) s += a[i] * b[i];
+  return s;
+}
+template <std::size_t D, class NT>
+NT dist2(const Point<D, NT>& a, const Point<D, NT>& b) {
+  NT s = 0;
+  for (std::size_t i = 0; i < D; ++i) {
+    NT d = a[i] - b[i];
+    s += d * d;
+  }
+  return s;
+}
+
 }  // namespace kmr::geometry

@@ -223,4 +223,25 @@ GadgetTiling<D> gadget_tiling(int tiles_log2, int delta_log2, int face_grid = 4)
   return {{input.begin(), input.end()}, dynamic};
 }
 
+// Near-duplicate pairs (issue 11): ⌈n/2⌉ seeded points (so n or n + 1 points) with 20-bit dyadic coordinates, each with a
+// partner `sep` away along axis (index mod D), toward the domain's centre (the partner's coordinate
+// is the double nearest to x ± sep; sep = 2^-k with k ≤ 33 keeps it exact). Pairs whose partner
+// would collide with another point are skipped; sorted, no duplicates.
+template <std::size_t D>
+std::vector<Point<D>> near_duplicate_pairs(std::size_t n, double sep, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::set<Point<D>> out;
+  for (std::size_t j = 0; out.size() < n && j < 100 * n + 10; ++j) {
+    Point<D> p;
+    for (auto& x : p) x = dyadic01(rng);
+    Point<D> q = p;
+    const std::size_t a = j % D;
+    q[a] = p[a] < 0.5 ? p[a] + sep : p[a] - sep;
+    if (out.count(p) || out.count(q)) continue;
+    out.insert(p);
+    out.insert(q);
+  }
+  return {out.begin(), out.end()};
+}
+
 }  // namespace kmr::wellspaced::gen

@@ -1,6 +1,6 @@
 #pragma once
 // Measurements shared by bench/wellspaced, the tests and the audit: update-cost sampling, the
-// operations of a computation graph read from canonical_graph(), exact nearest-neighbour distances
+// operations of a computation graph that changed in an update, exact nearest-neighbour distances
 // and the geometric spread.
 #include <algorithm>
 #include <cmath>
@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "exact/dyadic.hpp"
+#include "geometry/point.hpp"
 #include "wellspaced/well_spaced_set.hpp"
 
 namespace kmr::wellspaced {
@@ -46,64 +47,41 @@ UpdateSample sample_updates(WellSpacedSet<D>& ws, const std::vector<Point<D>>& e
   return s;
 }
 
-// ---------- operations of the computation graph, read from canonical_graph() ----------
+// ---------- the computation graph (structured: WellSpacedSet::computation_graph()) ----------
 
-// An operation node v_(t) of canonical_graph(), t = (rank, D/F, colour) (§3.2.3).
+// The vertices of the operations named by a line of canonical form that graph a has and graph b
+// has not (both sorted as computation_graph() returns them): an operation absent from b or whose
+// executed flag differs, the input edge v_(0) → it, an edge op → op (both ends), a read, a Steiner
+// vertex with its square (Lemma 3.3.15's M̂ for a = G, b = G′; M̂′ for a = G′, b = G).
 template <std::size_t D>
-struct OperationNode {
-  std::string name;             // "(x1 x2 @t)" as printed by canonical_graph()
-  Point<D> v{};
-  int rank = 0;
-  bool fill = false;
-  bool input_dispatch = false;  // scheduled by the edge v_(0) -> v_(t): rank from v's square (Lemma 3.1.5)
-};
-
-// Parses an operation name "(x1 .. xD @t)" (coordinates in %a). False for the origin time "@0".
-template <std::size_t D>
-bool parse_operation_name(const std::string& name, OperationNode<D>& op) {
-  auto at = name.find(" @");
-  if (name.size() < 4 || name.front() != '(' || name.back() != ')' || at == std::string::npos) return false;
-  std::string t = name.substr(at + 2, name.size() - at - 3);
-  if (t == "0") return false;
-  const char* p = name.c_str() + 1;
-  for (std::size_t i = 0; i < D; ++i) {
-    char* end = nullptr;
-    op.v[i] = std::strtod(p, &end);
-    if (end == p) return false;
-    p = end;
+std::set<Point<D>> vertices_of_changed_operations(const std::vector<GraphOperation<D>>& a,
+                                                  const std::vector<GraphOperation<D>>& b) {
+  std::map<decltype(a[0].key()), std::size_t> in_b;
+  for (std::size_t j = 0; j < b.size(); ++j) in_b.emplace(b[j].key(), j);
+  auto edges = [](const std::vector<GraphOperation<D>>& g) {
+    std::set<std::pair<decltype(g[0].key()), decltype(g[0].key())>> e;
+    for (const auto& o : g)
+      for (std::size_t t : o.targets) e.emplace(o.key(), g[t].key());
+    return e;
+  };
+  const auto ea = edges(a), eb = edges(b);
+  std::set<Point<D>> out;
+  for (const auto& o : a) {
+    auto it = in_b.find(o.key());
+    if (it == in_b.end()) {
+      out.insert(o.v);
+      continue;
+    }
+    const auto& p = b[it->second];
+    if (o.executed != p.executed || (o.input_dispatch && !p.input_dispatch) ||
+        !std::includes(p.reads.begin(), p.reads.end(), o.reads.begin(), o.reads.end()) ||
+        !std::includes(p.steiners.begin(), p.steiners.end(), o.steiners.begin(), o.steiners.end()))
+      out.insert(o.v);
   }
-  op.name = name;
-  op.rank = std::stoi(t);
-  op.fill = t.find(",F") != std::string::npos;
-  return true;
-}
-
-// The operation names "(.. @t)" mentioned in one line of canonical_graph() (origins "@0" excluded).
-template <std::size_t D>
-std::vector<OperationNode<D>> operations_in_line(const std::string& line) {
-  std::vector<OperationNode<D>> out;
-  for (std::size_t b = line.find('('); b != std::string::npos; b = line.find('(', b + 1)) {
-    std::size_t e = line.find(')', b);
-    if (e == std::string::npos) break;
-    OperationNode<D> op;
-    if (parse_operation_name<D>(line.substr(b, e - b + 1), op)) out.push_back(op);
-  }
-  return out;
-}
-
-// Every operation node of a canonical graph ("O" lines), input dispatches marked.
-template <std::size_t D>
-std::vector<OperationNode<D>> operations(const std::vector<std::string>& canonical) {
-  std::set<std::string> from_origin;
-  for (const auto& l : canonical)
-    if (l.rfind("E (", 0) == 0 && l.find(" @0) -> ") != std::string::npos) from_origin.insert(l.substr(l.find(" -> ") + 4));
-  std::vector<OperationNode<D>> out;
-  for (const auto& l : canonical)
-    if (l.rfind("O (", 0) == 0) {
-      OperationNode<D> op;
-      if (!parse_operation_name<D>(l.substr(2, l.find(')') - 1), op)) continue;
-      op.input_dispatch = from_origin.count(op.name) > 0;
-      out.push_back(op);
+  for (const auto& [from, to] : ea)
+    if (!eb.count({from, to})) {
+      out.insert(std::get<3>(from));
+      out.insert(std::get<3>(to));
     }
   return out;
 }
@@ -113,18 +91,16 @@ std::vector<OperationNode<D>> operations(const std::vector<std::string>& canonic
 // Exact squared distance of two points with double (dyadic) coordinates.
 template <std::size_t D>
 exact::Dyadic dist2_exact(const Point<D>& a, const Point<D>& b) {
-  exact::Dyadic s;
+  geometry::Point<D, exact::Dyadic> x, y;
   for (std::size_t i = 0; i < D; ++i) {
-    exact::Dyadic d = exact::Dyadic::from_double(a[i]) - exact::Dyadic::from_double(b[i]);
-    s += d * d;
+    x[i] = exact::Dyadic::from_double(a[i]);
+    y[i] = exact::Dyadic::from_double(b[i]);
   }
-  return s;
+  return geometry::dist2(x, y);
 }
 template <std::size_t D>
 double dist2_approx(const Point<D>& a, const Point<D>& b) {
-  double s = 0;
-  for (std::size_t i = 0; i < D; ++i) s += (a[i] - b[i]) * (a[i] - b[i]);
-  return s;
+  return geometry::dist2(a, b);
 }
 
 // NN_M(v) for every v of M, squared and exact: a sweep in x_1 finds the candidates in doubles (a
@@ -203,7 +179,7 @@ RankRatios rank_ratios(const WellSpacedSet<D>& ws) {
   auto nn = nearest_neighbor_dist2<D>(M);
   const double rho = ws.params().rho;
   RankRatios R;
-  for (const auto& op : operations<D>(ws.canonical_graph())) {
+  for (const auto& op : ws.computation_graph()) {
     const exact::Dyadic& nn2 = nn.at(op.v);
     double ratio = std::sqrt(nn2.to_double()) / std::pow(rho, op.rank);
     ++R.ops;
@@ -228,17 +204,14 @@ struct AffectedRatio {
   std::size_t vertices = 0;  // |M̂ ∪ M̂'|
 };
 template <std::size_t D>
-AffectedRatio affected_ratio(const std::vector<std::string>& G, const std::vector<Vertex<D>>& M,
-                             const std::vector<std::string>& G2, const std::vector<Vertex<D>>& M2,
+AffectedRatio affected_ratio(const std::vector<GraphOperation<D>>& G, const std::vector<Vertex<D>>& M,
+                             const std::vector<GraphOperation<D>>& G2, const std::vector<Vertex<D>>& M2,
                              const Point<D>& vhat) {
   AffectedRatio A;
   std::set<Point<D>> all;
-  auto side = [&](const std::vector<std::string>& a, const std::vector<std::string>& b, const std::vector<Vertex<D>>& out) {
-    std::vector<std::string> gone;
-    std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(gone));
-    std::set<Point<D>> hat;
-    for (const auto& l : gone)
-      for (const auto& op : operations_in_line<D>(l)) hat.insert(op.v);
+  auto side = [&](const std::vector<GraphOperation<D>>& a, const std::vector<GraphOperation<D>>& b,
+                  const std::vector<Vertex<D>>& out) {
+    std::set<Point<D>> hat = vertices_of_changed_operations<D>(a, b);
     if (hat.empty()) return;
     std::vector<Point<D>> P;
     for (const auto& x : out) P.push_back(x.x);

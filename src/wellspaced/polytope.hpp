@@ -20,6 +20,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "geometry/point.hpp"
 #include "exact/interval_nt.hpp"
 
 namespace kmr::wellspaced {
@@ -61,22 +62,8 @@ IPoint<D> enclose(const std::array<NT, D>& x) {
   return e;
 }
 
-template <class NT, std::size_t D>
-NT dot(const std::array<NT, D>& a, const std::array<NT, D>& b) {
-  NT s = 0;
-  for (std::size_t i = 0; i < D; ++i) s += a[i] * b[i];
-  return s;
-}
-
-template <class NT, std::size_t D>
-NT dist2(const std::array<NT, D>& a, const std::array<NT, D>& b) {
-  NT s = 0;
-  for (std::size_t i = 0; i < D; ++i) {
-    NT d = a[i] - b[i];
-    s += d * d;
-  }
-  return s;
-}
+using geometry::dist2;  // |a − b|², one definition for the library (geometry/point.hpp)
+using geometry::dot;
 
 // Sign of a quantity decided on its enclosure `approx` when possible, else by `exact()` (NT = Q)
 // or by throwing Uncertain (NT = IntervalNT).
@@ -100,7 +87,7 @@ template <std::size_t D, class NT>
 Halfspace<D, NT> bisector(const std::array<NT, D>& v, const std::array<NT, D>& u) {
   Halfspace<D, NT> h;
   for (std::size_t i = 0; i < D; ++i) h.a[i] = u[i] - v[i];
-  h.b = (dot<NT, D>(u, u) - dot<NT, D>(v, v)) / NT(2);
+  h.b = (dot(u, u) - dot(v, v)) / NT(2);
   return h;
 }
 
@@ -148,16 +135,16 @@ struct Polytope {
     return B;
   }
 
-  NT slack(const Halfspace<D, NT>& hs, const P& x) const { return dot<NT, D>(hs.a, x) - hs.b; }
+  NT slack(const Halfspace<D, NT>& hs, const P& x) const { return dot(hs.a, x) - hs.b; }
   // Exact sign of a·x − b for constraint k at a point with enclosure xi.
   int sign_at(std::size_t k, const P& x, const IPoint<D>& xi) const {
     const Constraint& c = h[k];
-    return filtered_sign<NT>(dot<IntervalNT, D>(c.ai, xi) - c.bi, [&] { return slack(c.h, x); });
+    return filtered_sign<NT>(dot(c.ai, xi) - c.bi, [&] { return slack(c.h, x); });
   }
   // Exact sign of |x − c|² − r2.
   static int compare_dist2(const P& x, const IPoint<D>& xi, const P& c, const IPoint<D>& ci, const NT& r2,
                            const IntervalNT& r2i) {
-    return filtered_sign<NT>(dist2<IntervalNT, D>(xi, ci) - r2i, [&] { return dist2<NT, D>(x, c) - r2; });
+    return filtered_sign<NT>(dist2(xi, ci) - r2i, [&] { return dist2(x, c) - r2; });
   }
 
   // Adds constraint hs (index = h.size() before the call) and clips. Returns its index.
@@ -221,7 +208,7 @@ struct Polytope {
   // An upper bound on the max squared distance from c over the vertices (rigorous; for pruning).
   double max_dist2_upper(const IPoint<D>& ci) const {
     double m = 0;
-    for (const auto& x : v) m = std::max(m, dist2<IntervalNT, D>(x.xi, ci).hi());
+    for (const auto& x : v) m = std::max(m, dist2(x.xi, ci).hi());
     return m;
   }
   // Is some vertex farther than sqrt(r2) from c?
@@ -236,7 +223,7 @@ struct Polytope {
   NT max_dist2(const P& c) const {
     NT m = 0;
     for (const auto& x : v) {
-      NT d = dist2<NT, D>(x.x, c);
+      NT d = dist2(x.x, c);
       if (d > m) m = d;
     }
     return m;
@@ -247,7 +234,7 @@ struct Polytope {
     std::size_t m = rows.size();
     std::vector<std::vector<NT>> G(m, std::vector<NT>(m + 1));
     for (std::size_t i = 0; i < m; ++i) {
-      for (std::size_t k = 0; k < m; ++k) G[i][k] = dot<NT, D>(h[rows[i]].h.a, h[rows[k]].h.a);
+      for (std::size_t k = 0; k < m; ++k) G[i][k] = dot(h[rows[i]].h.a, h[rows[k]].h.a);
       G[i][m] = slack(h[rows[i]].h, c);
     }
     for (std::size_t col = 0; col < m; ++col) {

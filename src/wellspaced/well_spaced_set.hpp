@@ -22,6 +22,8 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace kmr::wellspaced {
@@ -71,6 +73,29 @@ struct UpdateStats {
   std::uint64_t touched() const { return obsolete + fresh + inconsistent; }
 };
 
+// One operation v_(t) of the computation graph (§3.2.3), t = (rank, D/F, colour), with its reads
+// and out-edges. computation_graph() lists them sorted by (t, v): the graph canonical_graph()
+// prints as lines, in structured form (for measurements: Lemmas 3.3.6, 3.3.15).
+template <std::size_t D>
+struct GraphOperation {
+  struct Square {  // a square of the 2^D-tree: level and integer corner
+    int level = 0;
+    std::array<std::uint64_t, D> corner{};
+    friend bool operator==(const Square&, const Square&) = default;
+    friend auto operator<=>(const Square&, const Square&) = default;
+  };
+  Point<D> v{};
+  int rank = 0;
+  bool fill = false;          // F (else D)
+  std::int64_t color = 0;     // fills only
+  bool executed = false;
+  bool input_dispatch = false;                        // the edge v_(0) → v_(t) (input vertex)
+  std::vector<std::size_t> targets;                   // operations it enqueued (indexes), sorted
+  std::vector<Square> reads;                          // squares read, sorted
+  std::vector<std::pair<Point<D>, Square>> steiners;  // Steiner vertices inserted and their squares
+  auto key() const { return std::make_tuple(rank, fill, color, v); }  // (t, v), as sorted
+};
+
 template <std::size_t D>
 class WellSpacedSet {
  public:
@@ -92,6 +117,8 @@ class WellSpacedSet {
   // corner, operations by vertex coordinates (%a) and time (rank, D/F, color), one line per node
   // and per edge. Two graphs are isomorphic (Lemma 3.4.2) iff these vectors are equal.
   std::vector<std::string> canonical_graph() const;
+  // The same graph, structured (see GraphOperation).
+  std::vector<GraphOperation<D>> computation_graph() const;
   // "" if the internal indexes are consistent (readers = inverse of reads, sources = inverse of
   // targets, each vertex in the leaf locate() gives, nothing pending, adjacency caches equal the
   // tree's), else the first inconsistency found. For tests (Lemma 3.4.2 property).

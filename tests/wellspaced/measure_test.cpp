@@ -2,7 +2,13 @@
 // §3.4.2 (Theorem 3.4.5), with the helpers of wellspaced/measure.hpp they rely on.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <iterator>
+#include <map>
+#include <string>
+#include <tuple>
 #include <random>
 #include <set>
 
@@ -40,29 +46,122 @@ TEST(WellspacedMeasure, L3_3_6_ScheduledOperationsHaveNNBelowNextRank) {
   rank_case<3>(gen::Kind::uniform, 8, 13);
 }
 
-TEST(WellspacedMeasure, OperationsAreReadFromTheCanonicalGraph) {
+// The structured graph against its printed form: an oracle that parses canonical_graph() (names
+// "(x1 .. xD @t)", coordinates in %a) and shares no code with computation_graph().
+namespace {
+struct ParsedOp {
+  std::string name;
+  Point<2> v{};
+  int rank = 0;
+  bool fill = false, input_dispatch = false;
+};
+bool parse_name(const std::string& name, ParsedOp& op) {
+  auto at = name.find(" @");
+  if (name.size() < 4 || name.front() != '(' || name.back() != ')' || at == std::string::npos) return false;
+  std::string t = name.substr(at + 2, name.size() - at - 3);
+  if (t == "0") return false;
+  const char* p = name.c_str() + 1;
+  for (std::size_t i = 0; i < 2; ++i) {
+    char* end = nullptr;
+    op.v[i] = std::strtod(p, &end);
+    if (end == p) return false;
+    p = end;
+  }
+  op.name = name;
+  op.rank = std::stoi(t);
+  op.fill = t.find(",F") != std::string::npos;
+  return true;
+}
+std::vector<ParsedOp> parsed_operations(const std::vector<std::string>& canonical) {
+  std::set<std::string> from_origin;
+  for (const auto& l : canonical)
+    if (l.rfind("E (", 0) == 0 && l.find(" @0) -> ") != std::string::npos) from_origin.insert(l.substr(l.find(" -> ") + 4));
+  std::vector<ParsedOp> out;
+  for (const auto& l : canonical)
+    if (l.rfind("O (", 0) == 0) {
+      ParsedOp op;
+      if (!parse_name(l.substr(2, l.find(')') - 1), op)) continue;
+      op.input_dispatch = from_origin.count(op.name) > 0;
+      out.push_back(op);
+    }
+  return out;
+}
+// The vertices of the operations named in lines of a missing from b.
+std::set<Point<2>> parsed_changed(const std::vector<std::string>& a, const std::vector<std::string>& b) {
+  std::vector<std::string> gone;
+  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(gone));
+  std::set<Point<2>> out;
+  for (const auto& line : gone)
+    for (std::size_t p = line.find('('); p != std::string::npos; p = line.find('(', p + 1)) {
+      std::size_t e = line.find(')', p);
+      ParsedOp op;
+      if (e != std::string::npos && parse_name(line.substr(p, e - p + 1), op)) out.insert(op.v);
+    }
+  return out;
+}
+}  // namespace
+
+TEST(WellspacedMeasure, StructuredGraphEqualsTheCanonicalGraph) {
   auto input = gen::points<2>(gen::Kind::uniform, 20, 14);
   WellSpacedSet<2> ws(input);
-  auto ops = operations<2>(ws.canonical_graph());
+  auto ops = ws.computation_graph();
+  auto parsed = parsed_operations(ws.canonical_graph());
   ASSERT_EQ(ops.size(), ws.stats().ops);
+  ASSERT_EQ(ops.size(), parsed.size());
   std::set<Point<2>> M, dispatched;
   for (const auto& v : ws.vertices()) M.insert(v.x);
-  std::size_t inputs = 0;
+  std::size_t inputs = 0, edges = 0;
+  std::map<std::tuple<Point<2>, int, bool>, const ParsedOp*> by_key;
+  for (const auto& p : parsed) by_key[{p.v, p.rank, p.fill}] = &p;
   for (const auto& op : ops) {
-    EXPECT_TRUE(M.count(op.v)) << op.name;
+    auto it = by_key.find({op.v, op.rank, op.fill});
+    const ParsedOp* p = it == by_key.end() ? nullptr : it->second;
+    ASSERT_TRUE(p) << "no printed operation for a structured one";
+    EXPECT_EQ(op.input_dispatch, p->input_dispatch) << p->name;
+    EXPECT_TRUE(M.count(op.v)) << p->name;
     EXPECT_GE(op.rank, ws.stats().min_rank);
     EXPECT_LE(op.rank, ws.stats().max_rank);
     if (op.input_dispatch) {
       ++inputs;
-      EXPECT_FALSE(op.fill) << op.name;
-      EXPECT_TRUE(std::binary_search(input.begin(), input.end(), op.v)) << op.name;
+      EXPECT_FALSE(op.fill) << p->name;
+      EXPECT_TRUE(std::binary_search(input.begin(), input.end(), op.v)) << p->name;
     }
     if (!op.fill) {
-      EXPECT_TRUE(dispatched.insert(op.v).second) << "two dispatches of " << op.name;  // one per vertex
+      EXPECT_TRUE(dispatched.insert(op.v).second) << "two dispatches of " << p->name;  // one per vertex
     }
+    edges += op.targets.size() + op.reads.size() + op.steiners.size() + op.input_dispatch;
   }
   EXPECT_EQ(inputs, input.size());
   EXPECT_EQ(dispatched, M);
+  std::size_t printed_edges = 0;
+  for (const auto& l : ws.canonical_graph()) printed_edges += l[0] == 'E' || l[0] == 'R' || l[0] == 'W';
+  EXPECT_EQ(edges, printed_edges);
+}
+
+// Lemma 3.3.15's M̂ and M̂′ from the structured graphs equal those from the printed ones, over
+// insertions and deletions near and far from input vertices.
+TEST(WellspacedMeasure, L3_3_15_ChangedOperationsEqualTheCanonicalGraphDifference) {
+  RecordProperty("claim", "L3.3.15");
+  auto input = gen::points<2>(gen::Kind::uniform, 30, 17);
+  WellSpacedSet<2> ws(input);
+  std::mt19937_64 rng(17);
+  std::size_t nonempty = 0;
+  for (int trial = 0; trial < 6; ++trial) {
+    const auto& b = input[rng() % input.size()];
+    Point<2> q{b[0] + (b[0] < 0.5 ? 1 : -1) * std::ldexp(1.0, -8 - 4 * trial), b[1]};
+    auto G = ws.computation_graph();
+    auto C = ws.canonical_graph();
+    ws.insert(q);
+    auto G2 = ws.computation_graph();
+    auto C2 = ws.canonical_graph();
+    ws.erase(q);
+    for (auto [a, bb, ca, cb] : {std::tuple{&G, &G2, &C, &C2}, std::tuple{&G2, &G, &C2, &C}}) {
+      auto mine = vertices_of_changed_operations<2>(*a, *bb);
+      EXPECT_EQ(mine, parsed_changed(*ca, *cb)) << "trial " << trial;
+      nonempty += !mine.empty();
+    }
+  }
+  EXPECT_EQ(nonempty, 12u);
 }
 
 TEST(WellspacedMeasure, BelowNextRankIsExact) {
@@ -97,12 +196,12 @@ TEST(WellspacedMeasure, L3_3_15_AffectedVerticesOfAnInsertion) {
   RecordProperty("claim", "L3.3.15");
   auto input = gen::points<2>(gen::Kind::uniform, 16, 16);
   WellSpacedSet<2> ws(input);
-  auto G = ws.canonical_graph();
+  auto G = ws.computation_graph();
   auto M = ws.vertices();
   EXPECT_EQ(affected_ratio<2>(G, M, G, M, input[0]).vertices, 0u);
   Point<2> q{input[0][0] + (input[0][0] < 0.5 ? 1 : -1) * std::ldexp(1.0, -20), input[0][1]};
   ws.insert(q);
-  AffectedRatio A = affected_ratio<2>(G, M, ws.canonical_graph(), ws.vertices(), q);
+  AffectedRatio A = affected_ratio<2>(G, M, ws.computation_graph(), ws.vertices(), q);
   EXPECT_GT(A.vertices, 20u);  // rings around v̂ (Lemma 3.4.4)
   EXPECT_GT(A.max_ratio, 0);
   EXPECT_TRUE(std::isfinite(A.max_ratio));

@@ -1,0 +1,288 @@
+#pragma once
+// QTClippedVoronoi (Fig. 3.6, Lemma 3.2.1): the β-clipped Voronoi neighbours of v by an exact
+// certificate-region scan of the 2^D-tree, in two tiers (intervals, then rationals).
+// Internal: included only by well_spaced_set.cpp (after impl/state.hpp).
+#include "wellspaced/impl/state.hpp"
+
+namespace kmr::wellspaced {
+
+// Enclosure of square s = [k·2^-L, (k+1)·2^-L) per axis (endpoints widened when not doubles).
+template <std::size_t D>
+auto WellSpacedSet<D>::Impl::square_bounds(const K& s) -> std::array<std::pair<IntervalNT, IntervalNT>, D> {
+  std::array<std::pair<IntervalNT, IntervalNT>, D> b;
+  for (std::size_t i = 0; i < D; ++i) {
+    auto at = [&](std::uint64_t k) {
+      double x = std::ldexp(static_cast<double>(k), -s.level);
+      if (static_cast<std::uint64_t>(static_cast<double>(k)) == k) return IntervalNT(x);
+      return IntervalNT::hull(std::nextafter(x, -1.0), std::nextafter(x, 2.0));
+    };
+    b[i] = {at(s.k[i]), at(s.k[i] + 1)};
+  }
+  return b;
+}
+
+// max(0, lo − c, c − hi) as an interval: the distance along one axis from c to [lo, hi].
+template <std::size_t D>
+auto WellSpacedSet<D>::Impl::axis_gap(const IntervalNT& c, const IntervalNT& lo, const IntervalNT& hi) -> IntervalNT {
+  IntervalNT a = lo - c, b = c - hi;
+  return IntervalNT::hull(std::max({0.0, a.lo(), b.lo()}), std::max({0.0, a.hi(), b.hi()}));
+}
+
+// A lower bound on the squared distance from v to square s (orders the scan; prunes it). At
+// levels ≤ 52 the corners k·2^-L are exact doubles, so each gap has one rounding and the sum of D ≤ 4
+// squares has relative error < (D+3)·2^-53 < 2^-48; deeper squares go through intervals.
+template <std::size_t D>
+auto WellSpacedSet<D>::Impl::box_dist2_lower(const Pt& v, const IPoint<D>& vi, const K& s) -> double {
+  if (s.level <= 52) {
+    double h = std::ldexp(1.0, -s.level), d = 0;
+    for (std::size_t i = 0; i < D; ++i) {
+      double lo = static_cast<double>(s.k[i]) * h, hi = lo + h, g = 0;
+      if (v[i] < lo) g = lo - v[i];
+      else if (v[i] > hi) g = v[i] - hi;
+      d += g * g;
+    }
+    return d * (1 - 0x1p-48);
+  }
+  auto b = square_bounds(s);
+  IntervalNT d = 0;
+  for (std::size_t i = 0; i < D; ++i) {
+    IntervalNT g = axis_gap(vi[i], b[i].first, b[i].second);
+    d += g * g;
+  }
+  return d.lo();
+}
+
+// Exact: does square s meet B(c, |cv|) for some vertex c of C (the certificate region of C)?
+// C is relative to its site v, which sits at the origin; `vb` holds its vertices' bounds.
+template <std::size_t D>
+template <class NT>
+auto WellSpacedSet<D>::Impl::meets_certificate_region(const Polytope<D, NT>& C, const std::vector<VertexBounds>& vb, const Pt& v, const K& s) -> bool {
+  if (s.level <= 52) {  // fast path: the square's corners are doubles; plain double arithmetic,
+    // each squared gap sum within a relative 2^-49 of its value (≤ 7 roundings), decided only
+    // when the margin 2^-48 separates it from the enclosure of |cv|²
+    const double h = std::ldexp(1.0, -s.level);
+    bool undecided = false;
+    for (const VertexBounds& c : vb) {
+      double glo = 0, ghi = 0;
+      for (std::size_t i = 0; i < D; ++i) {
+        double sl = static_cast<double>(s.k[i]) * h, sh = sl + h;
+        double a = std::max({0.0, sl - c.hi[i], c.lo[i] - sh}), b = std::max({0.0, sl - c.lo[i], c.hi[i] - sh});
+        glo += a * a;
+        ghi += b * b;
+      }
+      if (ghi * (1 + 0x1p-48) < c.r_lo) return true;
+      if (!(glo * (1 - 0x1p-48) > c.r_hi)) undecided = true;
+    }
+    if (!undecided) return false;
+  }
+  auto b = square_bounds(s);
+  for (std::size_t i = 0; i < D; ++i) {
+    b[i].first -= IntervalNT(v[i]);
+    b[i].second -= IntervalNT(v[i]);
+  }
+  for (std::size_t j = 0; j < C.v.size(); ++j) {
+    const auto& c = C.v[j];
+    IntervalNT gap = 0;
+    for (std::size_t i = 0; i < D; ++i) {
+      IntervalNT g = axis_gap(c.xi[i], b[i].first, b[i].second);
+      if (g.hi() > 0) gap += g * g;
+    }
+    IntervalNT radius = IntervalNT::hull(vb[j].r_lo, vb[j].r_hi);
+    if (gap.hi() < radius.lo()) return true;
+    int sg = filtered_sign<NT>(gap - radius, [&] {
+      const NT side(std::ldexp(1.0, -s.level));  // 2^-L: a double (L ≤ 56)
+      NT g2 = 0;
+      for (std::size_t i = 0; i < D; ++i) {
+        // k < 2^56 may not be a double: k = hi·2^28 + lo with both halves exact
+        const std::uint64_t k = s.k[i];
+        NT lo = (NT(static_cast<double>(k >> 28)) * NT(0x1p28) + NT(static_cast<double>(k & 0xFFFFFFFu))) * side - NT(v[i]);
+        NT hi = lo + side, g = 0;
+        if (c.x[i] < lo) g = lo - c.x[i];
+        else if (c.x[i] > hi) g = c.x[i] - hi;
+        g2 += g * g;
+      }
+      return g2 - dot(c.x, c.x);
+    });
+    if (sg <= 0) return true;
+  }
+  return false;
+}
+
+// QTClippedVoronoi (Fig. 3.6), one tier. Phase 1 scans squares in Euclidean order until NN(v) is
+// known. Phase 2 maintains C = Vor_seen(v) ∩ box(v, R), R ≥ β·NN, and reads a square only if it
+// meets the certificate region of C — the union of the balls B(c, |cv|) over the vertices c of C
+// (|c−p|² − |c−v|² is linear in c, so vertices suffice) — which only shrinks as vertices are
+// seen. Unseen vertices then lie outside every certificate ball, so C ∩ B(v, β·NN) =
+// Vor_M(v) ∩ B(v, β·NN); the β-clipped neighbours are decided exactly on C. Reads vertices
+// created before t only.
+template <std::size_t D>
+template <class NT>
+auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) -> CVResult {
+  using NPt = std::array<NT, D>;
+  CVResult res;
+  const NPt vq{};  // the cell is computed relative to v
+  const IPoint<D> vi{};
+  const IPoint<D> vabs = point_in<IntervalNT, D>(v);
+  auto rel = [&](const Pt& u) { return relative_to<NT, D>(u, v); };
+  struct QE {  // a square to scan, ordered by (lower bound on its distance, key)
+    double key;
+    Leaf* leaf;
+    bool operator>(const QE& o) const { return key != o.key ? key > o.key : leaf->key > o.leaf->key; }
+  };
+  std::priority_queue<QE, std::vector<QE>, std::greater<QE>> heap;
+  const std::uint64_t stamp = ++scan_stamp;  // squares reached by this scan carry it
+  const K start = vtx.at(v).leaf;
+  Leaf& start_leaf = leaves.at(start);
+  heap.push({0.0, &start_leaf});
+  start_leaf.stamp = stamp;
+  struct Cand {
+    double approx;   // |uv|² rounded (the clipping order)
+    IntervalNT d;    // |uv|² enclosed
+    Pt u;
+  };
+  std::vector<Cand> cand;
+  std::vector<K> late;  // squares popped after NN was fixed
+  double best = std::numeric_limits<double>::infinity();  // upper bound on NN²
+  bool nn_fixed = false;
+  double limit = std::numeric_limits<double>::infinity();
+  std::optional<Polytope<D, NT>> C;
+  std::vector<int> cidx;  // constraint index of cand[i] in C (−1: its bisector misses C)
+  double maxd = 0;        // upper bound on max_{c ∈ C} |cv|²
+  auto clip_from = [&](std::size_t i0) {
+    for (std::size_t i = i0; i < cand.size(); ++i) {
+      // |uv|/2 > max_c |cv| means the bisector of v, u misses C
+      if (cand[i].d.lo() > 4 * maxd) {
+        cidx.push_back(-1);
+        continue;
+      }
+      unsigned ver = C->version;
+      cidx.push_back(C->clip(bisector<D, NT>(vq, rel(cand[i].u))));
+      if (C->version != ver) maxd = C->max_dist2_upper(vi);
+    }
+    limit = 4 * maxd;  // a point of a certificate ball B(c, |cv|) is within 2|cv| of v
+  };
+  auto fix_nn = [&]() {
+    NT nn2 = -1;
+    bool have = false;
+    for (const Cand& c : cand)
+      if (c.d.lo() <= best) {
+        NT e = dist2(rel(c.u), vq);
+        if (!have || e < nn2 || (e == nn2 && c.u < res.nn)) {
+          nn2 = e;
+          res.nn = c.u;
+          have = true;
+        }
+      }
+    nn_fixed = true;
+    // box half-width R ≥ β·NN: β·NN rounded up to 8 significant bits, from doubles of the chosen
+    // nearest vertex (so R is the same in both tiers), checked exactly
+    NT r2 = sq<NT>(params.beta) * nn2;
+    double nd = 0;
+    for (std::size_t i = 0; i < D; ++i) nd += (res.nn[i] - v[i]) * (res.nn[i] - v[i]);
+    double bn = params.beta * std::sqrt(nd);
+    int e = static_cast<int>(std::ceil(std::log2(bn))) - 8;
+    double R = std::ldexp(std::ceil(std::ldexp(bn, -e)), e);
+    while (NT(R) * NT(R) < r2) R += std::ldexp(1.0, e);
+    NPt lo, hi;
+    for (std::size_t i = 0; i < D; ++i) {
+      lo[i] = NT(-R);
+      hi[i] = NT(R);
+    }
+    C = Polytope<D, NT>::box(lo, hi);
+    maxd = C->max_dist2_upper(vi);
+    std::sort(cand.begin(), cand.end(), [](const Cand& a, const Cand& b) {
+      return a.approx != b.approx ? a.approx < b.approx : a.u < b.u;
+    });
+    clip_from(0);
+  };
+  std::vector<VertexBounds> vb;  // bounds of the vertices of C
+  unsigned vb_version = ~0u;
+  auto meets = [&](const K& s) {
+    if (vb_version != C->version || vb.size() != C->v.size()) {
+      vb.clear();
+      for (const auto& c : C->v) {
+        VertexBounds b;
+        for (std::size_t i = 0; i < D; ++i) {
+          IntervalNT x = c.xi[i] + vabs[i];
+          b.lo[i] = x.lo();
+          b.hi[i] = x.hi();
+        }
+        IntervalNT r = dist2(c.xi, vi);
+        b.r_lo = r.lo();
+        b.r_hi = r.hi();
+        vb.push_back(b);
+      }
+      vb_version = C->version;
+    }
+    return meets_certificate_region<NT>(*C, vb, v, s);
+  };
+  while (!heap.empty()) {
+    const double key = heap.top().key;
+    Leaf& L = *heap.top().leaf;
+    const K& s = L.key;
+    if (!nn_fixed && key > best) fix_nn();
+    if (nn_fixed && key > limit) break;
+    heap.pop();
+    if (nn_fixed && !(s == start) && !meets(s)) continue;
+    if (nn_fixed) late.push_back(s);
+    else res.reads.push_back(s);
+    std::size_t before = cand.size();
+    {
+      std::vector<Pt> here;
+      for (const Pt& u : L.verts)
+        if (!(u == v) && vtx.at(u).created < t) here.push_back(u);
+      std::sort(here.begin(), here.end());
+      for (const Pt& u : here) {
+        IntervalNT d = dist2(point_in<IntervalNT, D>(u), vabs);
+        cand.push_back({d.approx(), d, u});
+        best = std::min(best, d.hi());
+      }
+    }
+    if (nn_fixed && cand.size() > before) clip_from(before);
+    for (Leaf* n : adjacent_leaves(L))
+      if (n->stamp != stamp) {
+        n->stamp = stamp;
+        heap.push({box_dist2_lower(v, vabs, n->key), n});
+      }
+  }
+  KMR_CHECK(!cand.empty(), "clipped Voronoi scan found no vertex");
+  if (!nn_fixed) fix_nn();
+  // The squares read are those of the NN phase and those meeting the certificate region of the
+  // FINAL cell: a function of the data, not of the order in which squares were popped (squares
+  // popped earlier against a larger region hold only vertices that cannot affect the result).
+  for (const K& s : late)
+    if (meets(s)) res.reads.push_back(s);
+  std::sort(res.reads.begin(), res.reads.end());
+  // exact decision: u ∈ CV iff the face of C on the bisector of v, u has a point within β·NN
+  NT r2 = sq<NT>(params.beta) * dist2(rel(res.nn), vq);
+  const double r2_hi = exact::enclose(r2).hi();
+  for (std::size_t i = 0; i < cand.size(); ++i) {
+    if (cidx[i] < 0 || cand[i].d.lo() > 4 * r2_hi) continue;  // the face is beyond β·NN
+    if (C->face_within(cidx[i], vq, r2, 2 * static_cast<int>(D))) res.cv.push_back(cand[i].u);
+  }
+  std::sort(res.cv.begin(), res.cv.end());
+  return res;
+}
+
+template <std::size_t D>
+auto WellSpacedSet<D>::Impl::clipped_voronoi_neighbors(const Pt& v, const Time& t) -> CVResult {
+  CVResult res;
+  try {
+    if (params.exact_only) throw Uncertain();
+    res = clipped_voronoi_tier<IntervalNT>(v, t);
+  } catch (const Uncertain&) {
+    stats.exact_fallbacks++;
+    res = clipped_voronoi_tier<Q>(v, t);
+  }
+  if (upd) {
+    upd->cv_calls++;
+    upd->cv_squares_total += res.reads.size();
+  }
+  stats.cv_calls++;
+  stats.cv_squares_total += res.reads.size();
+  stats.cv_squares_max = std::max<std::uint64_t>(stats.cv_squares_max, res.reads.size());
+  stats.cv_neighbors_max = std::max<std::uint64_t>(stats.cv_neighbors_max, res.cv.size());
+  return res;
+}
+
+}  // namespace kmr::wellspaced

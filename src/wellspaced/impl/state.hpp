@@ -1,0 +1,214 @@
+#pragma once
+// Internal to src/wellspaced (included only by well_spaced_set.cpp, through the files of impl/):
+// the state of WellSpacedSet<D> — the 2^D-tree and its leaves (the vertex store), the vertices,
+// the computation graph (operations, their reads and the readers of each square), the queue of
+// pending operations — and the declarations of the algorithm's parts, each defined in the file
+// of impl/ named for its part of the thesis:
+//   ranks.hpp              ranks ⌊log_ρ NN⌋, ℓ(r), colours (§3.2.1–3.2.2, Lemma 3.3.12)
+//   vertex_store.hpp       vertices in the leaves of the 2^D-tree (QTInsertSteiner, §3.1.2)
+//   computation_graph.hpp  operations, Enqueue, MarkReaders; the canonical form (§3.2.3)
+//   clipped_voronoi.hpp    QTClippedVoronoi (Fig. 3.6, Lemma 3.2.1)
+//   stable_ws.hpp          StableWS: Dispatch, Fill and the Steiner choice (Fig. 3.4)
+//   propagate_ws.hpp       PropagateWS, Insert, Delete (Fig. 3.8; the invariants of Lemma 3.4.2)
+#include "wellspaced/well_spaced_set.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <optional>
+#include <queue>
+#include <set>
+#include <unordered_map>
+#include <algorithm>
+#include <bit>
+
+#include "exact/error.hpp"
+#include "wellspaced/polytope.hpp"
+#include "wellspaced/quadtree.hpp"
+
+namespace kmr::wellspaced {
+
+namespace {
+
+// Time of an operation (§3.2.3): (rank, D < F, color); time 0 is rank = INT_MIN.
+struct Time {
+  int rank = std::numeric_limits<int>::min();
+  int type = 0;  // 0 dispatch, 1 fill
+  std::int64_t color = 0;
+  friend bool operator==(const Time&, const Time&) = default;
+  friend auto operator<=>(const Time&, const Time&) = default;
+  bool is_origin() const { return rank == std::numeric_limits<int>::min(); }
+  std::string str() const {
+    if (is_origin()) return "0";
+    return std::to_string(rank) + (type ? ",F," + std::to_string(color) : std::string(",D"));
+  }
+};
+
+template <std::size_t D>
+std::string fmt_point(const Point<D>& x) {
+  std::string s;
+  char buf[64];
+  for (std::size_t i = 0; i < D; ++i) {
+    std::snprintf(buf, sizeof buf, "%a", x[i]);
+    s += (i ? " " : "") + std::string(buf);
+  }
+  return s;
+}
+
+template <std::size_t D>
+void validate_point(const Point<D>& p, const std::string& where) {
+  for (std::size_t i = 0; i < D; ++i) {
+    if (!std::isfinite(p[i])) throw InputError(where + ": coordinate " + std::to_string(i + 1) + " is not finite");
+    if (p[i] < 0.0 || p[i] > 1.0)
+      throw InputError(where + ": coordinate " + std::to_string(i + 1) + " = " + std::to_string(p[i]) + " is outside [0,1]");
+  }
+}
+
+}  // namespace
+
+template <std::size_t D>
+struct WellSpacedSet<D>::Impl {
+  using K = Key<D>;
+  using Pt = Point<D>;
+  struct OpKey {
+    Time t;
+    Pt v;
+    friend bool operator==(const OpKey&, const OpKey&) = default;
+    friend auto operator<=>(const OpKey&, const OpKey&) = default;
+  };
+  struct Op {
+    bool input_source = false;      // edge v_(0) → this (input dispatch)
+    std::vector<OpKey> sources;     // operations that enqueued this one
+    bool executed = false;
+    std::vector<K> reads;           // squares read (edges s → op)
+    std::vector<OpKey> targets;     // operations enqueued (edges op → op)
+    std::vector<Pt> steiners;       // Steiner vertices inserted (edges op → square of w)
+  };
+  struct Vtx {
+    bool steiner = false;
+    Time created;
+    K leaf;
+  };
+  struct Leaf {
+    const Pt* input = nullptr;
+    std::vector<Pt> verts;  // vertices (input and Steiner) inside
+    K key;
+    // cache of tree.adjacent_leaves(key), valid if adjacent_ok; the pointers stay valid while it is
+    // (unordered_map nodes do not move; a vanished leaf's neighbours are all invalidated)
+    std::vector<Leaf*> adjacent;
+    bool adjacent_ok = false;
+    std::uint64_t stamp = 0;  // the last scan that reached this square
+  };
+
+  Params params;
+  Q rho2, beta2;
+  int kappa = 0;
+  int rmax = 0;
+  Quadtree<D> tree;
+  std::map<Pt, Vtx> vtx;
+  std::unordered_map<K, Leaf, KeyHash<D>> leaves;
+  std::uint64_t scan_stamp = 0;  // numbers the clipped-Voronoi scans (Leaf::stamp)
+  std::map<OpKey, Op> ops;
+  std::map<Pt, std::set<Time>> ops_by_vertex;
+  std::unordered_map<K, std::vector<OpKey>, KeyHash<D>> readers;  // square → its readers (unordered)
+  std::set<OpKey> pending;
+  std::map<int, Q> rho_pow2;  // ρ^{2r}
+  std::map<int, IntervalNT> rho_pow2_i;  // enclosures of ρ^{2r}
+  std::map<int, int> ell_exp; // ℓ(r) = 2^{ell_exp}
+  Stats stats;
+  UpdateStats* upd = nullptr;
+  std::size_t n_input = 0;
+
+  // ---------- parameters, ranks, colors (§3.2.1–3.2.2, Lemma 3.3.12): impl/ranks.hpp ----------
+  void set_params(const Params& p);
+  const Q& rpow(int r);
+  int rank_of(const Q& d2);
+  int rank_between(const Pt& a, const Pt& b);
+  template <class NT>
+  int rank_in(const NT& d2);
+  const IntervalNT& rpow_i(int r);
+  int ell(int r);
+  std::int64_t color(const Pt& w, int r);
+  void refuse_out_of_reach(int depth) const;
+
+  // ---------- vertices and squares: impl/vertex_store.hpp ----------
+  const Pt* leaf_input(const K& leaf) const;
+  Leaf& leaf_of(const K& s);
+  const std::vector<Leaf*>& adjacent_leaves(Leaf& L);
+  void place(const Pt& x);
+  void unplace(const Pt& x);
+
+  // ---------- operations and the computation graph (§3.2.3): impl/computation_graph.hpp ----------
+  void mark_readers(const K& s, const Time& t);  // MarkReaders(s, t)
+  Op& get_op(const OpKey& k);
+  void erase_op(typename std::map<OpKey, Op>::iterator it);
+  void enqueue(const Pt& w, int type, int rank, const OpKey& from, Op& fromop);
+  Time input_dispatch_time(const Pt& v);
+  std::string check_internal_indexes() const;
+  std::vector<std::string> canonical_graph() const;
+  std::vector<GraphOperation<D>> computation_graph() const;
+
+  // ---------- QTClippedVoronoi (§3.2.4, Fig. 3.6): impl/clipped_voronoi.hpp ----------
+  // Every geometric decision below is made by a two-tier filter (spec/wellspaced.md, "Exactness"):
+  // the tier templated on NT = IntervalNT runs first and throws Uncertain when some decision is too
+  // close to call; the call is then redone with NT = Q. Both tiers make the same decisions, so the
+  // results do not depend on which tier answered. Doubles only order work and prune it rigorously.
+  struct CVResult {
+    std::vector<K> reads;  // squares read, sorted
+    Pt nn{};               // a nearest visible vertex (the lexicographically least on ties)
+    std::vector<Pt> cv;    // β-clipped Voronoi neighbours, sorted
+  };
+  static std::array<std::pair<IntervalNT, IntervalNT>, D> square_bounds(const K& s);
+  static IntervalNT axis_gap(const IntervalNT& c, const IntervalNT& lo, const IntervalNT& hi);
+  static double box_dist2_lower(const Pt& v, const IPoint<D>& vi, const K& s);
+  // Enclosures, per vertex c of a cell C around v, of c's absolute coordinates and of |cv|².
+  struct VertexBounds {
+    std::array<double, D> lo, hi;
+    double r_lo, r_hi;
+  };
+  template <class NT>
+  static bool meets_certificate_region(const Polytope<D, NT>& C, const std::vector<VertexBounds>& vb, const Pt& v, const K& s);
+  template <class NT>
+  CVResult clipped_voronoi_tier(const Pt& v, const Time& t);
+  template <class NT>
+  static NT sq(double x) { return NT(x) * NT(x); }
+  CVResult clipped_voronoi_neighbors(const Pt& v, const Time& t);
+
+  // ---------- StableWS: Dispatch and Fill (Fig. 3.4): impl/stable_ws.hpp ----------
+  void construct(const std::vector<Pt>& input);
+  void dispatch(const OpKey& k, Op& op);
+  template <class NT>
+  Pt pick(const std::array<NT, D>& vq, const Pt& v, const Pt& nn, const NT& nn2, const Polytope<D, NT>& P);
+  // Step 4 of pick (exact tier): the first double w (in ring order around p, then offsets in
+  // lexicographic order) with in_region(w) among the doubles of the box of P (relative to v)
+  // ∩ [v − B, v + B] ∩ [0,1]^D. complete: the rings covered that box (so a miss is a proof).
+  struct Enumeration {
+    std::optional<Pt> w;
+    bool complete = false;
+    std::uint64_t tried = 0;
+  };
+  template <class InRegion>
+  static Enumeration pick_by_enumeration(const Pt& v, const std::array<Q, D>& p, const InRegion& in_region, const Polytope<D, Q>& P, double B);
+  template <class NT>
+  static double floor_div_pow2(const NT& x, int e);
+  template <class NT>
+  std::vector<Pt> fill_tier(const Pt& v, const CVResult& cv);
+  void fill(const OpKey& k, Op& op);
+
+  // ---------- change propagation (Fig. 3.8): impl/propagate_ws.hpp ----------
+  void undo(const OpKey& k, Op& op);
+  void process(const OpKey& k);
+  void propagate();
+  void set_input_dispatch(const Pt& v);
+  void clear_input_dispatch(const Pt& v);
+  std::vector<std::pair<OpKey, Op*>> ops_of(const Pt& v);
+  std::vector<Pt> apply_tree_change(const typename Quadtree<D>::Change& ch);
+  void redo_input_dispatch(const Pt& u);
+  UpdateStats insert(const Pt& p);
+  UpdateStats erase(const Pt& p);
+
+};
+
+}  // namespace kmr::wellspaced
