@@ -75,6 +75,7 @@ CheckResult check_spanner(const Spanner& S) {
   std::vector<std::size_t> expected(n, 0), stored(n, 0);
   for (int x = 0; x < n; ++x)
     for (int y = x + 1; y < n; ++y) {
+      if (!S.alive(x) || !S.alive(y)) continue;  // removed vertices (spanner_repair) are in no list
       Rank mt = std::min(S.top(x), S.top(y));
       if (!within_filtered(S.position(x), S.enclosure(x), S.position(y), S.enclosure(y), kC, mt)) continue;
       if (S.position(x) == S.position(y)) {
@@ -94,7 +95,7 @@ CheckResult check_spanner(const Spanner& S) {
     for (auto& [l, list] : S.all_neighbors(x))
       for (std::size_t i = 0; i < list.size(); ++i) {
         int y = list[i];
-        if ((i > 0 && list[i - 1] >= y) || y == x || y < 0 || y >= n || S.top(x) < l || S.top(y) < l ||
+        if ((i > 0 && list[i - 1] >= y) || y == x || y < 0 || y >= n || !S.alive(x) || !S.alive(y) || S.top(x) < l || S.top(y) < l ||
             !within(S.position(x), S.position(y), kC, l)) {
           add(r, "S3 neighbours: vertex " + std::to_string(x) + " lists " + std::to_string(y) + " wrongly at rank " + std::to_string(l));
           continue;
@@ -107,6 +108,7 @@ CheckResult check_spanner(const Spanner& S) {
   // S2 covering and parents; S4 kids.
   std::map<std::pair<int, Rank>, std::vector<int>> kids;
   for (int x = 0; x < n; ++x) {
+    if (!S.alive(x)) continue;
     if (x == S.root()) {
       if (S.top(x) != S.top_rank()) add(r, "root is not at the top rank");
       continue;
@@ -115,10 +117,10 @@ CheckResult check_spanner(const Spanner& S) {
     Rank t = S.top(x) + 1;
     bool covered = false;
     for (int y = 0; y < n && !covered; ++y)
-      if (y != x && S.top(y) >= t && within(S.position(x), S.position(y), 1, t)) covered = true;
+      if (y != x && S.alive(y) && S.top(y) >= t && within(S.position(x), S.position(y), 1, t)) covered = true;
     if (!covered) add(r, "S2 covering: no " + std::to_string(t) + "-center within 2^" + std::to_string(t) + " of " + std::to_string(x));
     int p = S.parent(x);
-    if (p < 0 || p >= n || S.top(p) < t || !within(S.position(x), S.position(p), 1, t))
+    if (p < 0 || p >= n || !S.alive(p) || S.top(p) < t || !within(S.position(x), S.position(p), 1, t))
       add(r, "S2 parent of " + std::to_string(x) + " is not a " + std::to_string(t) + "-center within 2^" + std::to_string(t));
     else
       kids[{p, S.top(x)}].push_back(x);
@@ -131,7 +133,8 @@ CheckResult check_spanner(const Spanner& S) {
       listed += k.size();
       if (!k.empty() && k != kids[{y, l}]) add(r, "S4 kids of " + std::to_string(y) + " at rank " + std::to_string(l));
     }
-  if (listed != static_cast<std::size_t>(n - 1)) add(r, "S4: " + std::to_string(listed) + " kids listed for " + std::to_string(n - 1) + " non-root vertices");
+  const std::size_t live = S.alive_count();
+  if (listed != live - 1) add(r, "S4: " + std::to_string(listed) + " kids listed for " + std::to_string(live - 1) + " non-root vertices");
   return r;
 }
 
