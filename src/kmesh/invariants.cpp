@@ -366,4 +366,35 @@ std::vector<CheckResult> check_all(const Mesh& m) {
           check_size_conformity(m)};
 }
 
+CheckResult check_active_satellites(const Mesh& m) {
+  CheckResult r{"U1", {}, 0};
+  std::map<std::pair<int, Rank>, int> count, conv;
+  for (auto& c : m.considered) {
+    ++count[{c.nucleus, c.rank}];
+    conv[{c.nucleus, c.rank}] += c.converted;
+  }
+  std::size_t expected_total = 0;
+  for (int v = 0; v < static_cast<int>(m.n()) && m.n() >= 2; ++v) {
+    Rank rho = m.info[v].rank;
+    for (Rank l = rho; l <= m.highest; ++l) {
+      bool act = l == rho || conv[{v, l - 1}] > 0;
+      if (!act) break;
+      expected_total += 12;
+      if (count[{v, l}] != 12)
+        add(r, "vertex " + std::to_string(v) + " active at rank " + std::to_string(l) + " has " +
+                   std::to_string(count[{v, l}]) + " satellites considered");
+    }
+  }
+  if (m.considered.size() != expected_total)
+    add(r, std::to_string(m.considered.size()) + " satellites considered, " + std::to_string(expected_total) +
+               " belong to active vertices");
+  return r;
+}
+
+std::vector<CheckResult> check_all_updated(const Mesh& m) {
+  return {check_spanner(m.spanner),    check_active_satellites(m), check_independent_set(m), check_empty_balls(m),
+          check_voronoi_candidates(m), check_min_ranks(m),         check_delaunay(m),        check_well_spaced(m),
+          check_size_conformity(m)};
+}
+
 }  // namespace kmr::kmesh

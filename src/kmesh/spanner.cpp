@@ -87,6 +87,8 @@ void Spanner::remove_kid(int y, Rank l, int x) {
 }
 
 void Spanner::add_neighbor_pair(int x, int y, Rank l) {
+  touched.push_back(x);
+  touched.push_back(y);
   sorted_insert(nodes_[x].nbrs[l], y);
   sorted_insert(nodes_[y].nbrs[l], x);
 }

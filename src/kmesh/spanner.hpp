@@ -89,6 +89,10 @@ class Spanner {
   int insert_point(const Point2& p, int reuse = -1);  // reuse: a dead id to give it
   void remove(int x);
   void relocate(const std::vector<int>& xs, const std::vector<Point2>& positions);
+  // Vertices whose neighbour lists changed since the caller last cleared it (for activation ranks).
+  std::vector<int> touched;
+  // The same spanner over the live vertices renumbered by new_id (−1 for a dead vertex).
+  Spanner compacted(const std::vector<int>& new_id) const;
 
   // Insertion of a new vertex (Convert, TryToPromote): `nbrs[ℓ]` are its ℓ-neighbours for the ranks
   // it is a center at and has neighbours; top its maximum rank; parent (or −1 with a proxy while

@@ -108,6 +108,7 @@ std::vector<int> Spanner::detach(const std::vector<int>& xs) {
           ++ops;
           auto& ly = nodes_[y].nbrs[r];
           sorted_erase(ly, x);
+          touched.push_back(y);
           if (ly.empty()) nodes_[y].nbrs.erase(r);
         }
   std::vector<int> orphans;
@@ -168,6 +169,33 @@ void Spanner::repair_orphans(std::vector<int> orphans) {
       if (z != y) add_neighbor_pair(y, z, k + 1);
     queue.insert({k + 1, y});
   }
+}
+
+Spanner Spanner::compacted(const std::vector<int>& new_id) const {
+  Spanner s;
+  s.top_rank_ = top_rank_;
+  s.lambda_ = lambda_;
+  s.root_ = new_id[root_];
+  s.alive_count_ = alive_count_;
+  s.nodes_.resize(alive_count_);
+  auto remap = [&](const std::vector<int>& v) {
+    std::vector<int> out;
+    for (int y : v) out.push_back(new_id[y]);
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  for (std::size_t x = 0; x < nodes_.size(); ++x) {
+    if (!nodes_[x].alive) continue;
+    Node& d = s.nodes_[new_id[x]];
+    d.p = nodes_[x].p;
+    d.e = nodes_[x].e;
+    d.top = nodes_[x].top;
+    d.parent = nodes_[x].parent < 0 ? -1 : new_id[nodes_[x].parent];
+    for (auto& [r, v] : nodes_[x].nbrs) d.nbrs[r] = remap(v);
+    for (auto& [r, v] : nodes_[x].kids)
+      if (!v.empty()) d.kids[r] = remap(v);
+  }
+  return s;
 }
 
 void Spanner::remove(int x) { repair_orphans(detach({x})); }
