@@ -163,7 +163,8 @@ CheckResult check_independent_set(const Mesh& m) {
   std::map<Rank, std::vector<const Considered*>> by_rank;
   for (auto& c : m.considered) by_rank[c.rank].push_back(&c);
   for (auto& [l, cs] : by_rank) {
-    int start = cs.front()->existing;  // vertices before the rank's first conversion
+    int start = cs.front()->existing;  // vertices before the rank's first conversion (the smallest)
+    for (auto* c : cs) start = std::min(start, c->existing);
     std::vector<Point2> pos;
     std::vector<bool> conv;
     for (auto* c : cs) {

@@ -376,15 +376,18 @@ Mesh Updater::mesh() {
     auto [l, v, ray] = steiner[i].first;
     m.info[n + i] = VertexInfo{true, v, l, ray};
   }
-  // considered, in canonical order; `existing` = the vertices of lower rank (ids are rank-major).
+  // considered, in canonical order (ids are rank-major). `existing`: the vertices of lower rank for a
+  // converted satellite, of rank ≤ ℓ for one not converted (its witness may be of the same rank), so
+  // that the certificates and the L4.2.5 check (which takes the rank's smallest) read as U2.
   std::vector<std::tuple<Rank, int, int, const Sat*>> cons;
   for (auto& [k, st] : sats_) cons.push_back({std::get<0>(k), input_new.at(std::get<1>(k)), std::get<2>(k), &st});
   std::sort(cons.begin(), cons.end());
-  std::size_t below = 0;
+  std::size_t below = 0, upto = 0;
   for (auto& [l, v, ray, st] : cons) {
     while (below < steiner.size() && std::get<0>(steiner[below].first) < l) ++below;
+    while (upto < steiner.size() && std::get<0>(steiner[upto].first) <= l) ++upto;
     int vid = st->converted ? new_id[st->vertex] : -1;
-    m.considered.push_back({v, ray, l, st->converted, vid, n + static_cast<int>(below)});
+    m.considered.push_back({v, ray, l, st->converted, vid, n + static_cast<int>(st->converted ? below : upto)});
     if (m.ranks.empty() || m.ranks.back().rank != l) m.ranks.push_back(RankStats{l, 0, 0, 0, 0});
     ++m.ranks.back().considered;
     m.ranks.back().converted += st->converted;
