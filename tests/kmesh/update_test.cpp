@@ -128,4 +128,4 @@ TEST(Update, RandomUniform) { family_case(0, 5, 4); }
 TEST(Update, RandomGrid) { family_case(1, 5, 4); }
 TEST(Update, RandomCollinear) { family_case(2, 4, 4); }
 TEST(Update, RandomCocircular) { family_case(3, 5, 4); }
-TEST(Update, RandomClusters2To30) { family_case(4, 3, 3); }
+TEST(Update, RandomClusters2To30) { family_case(4, 3, 2); }
