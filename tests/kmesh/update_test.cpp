@@ -124,8 +124,8 @@ void family_case(int family, int n0, int steps) {
   std::printf("family %-14s mean Steiner fraction shared with a from-scratch construction: %.3f\n", names[family], s);
 }
 
-TEST(Update, RandomUniform) { family_case(0, 5, 4); }
-TEST(Update, RandomGrid) { family_case(1, 5, 4); }
-TEST(Update, RandomCollinear) { family_case(2, 4, 4); }
-TEST(Update, RandomCocircular) { family_case(3, 5, 4); }
+TEST(Update, RandomUniform) { family_case(0, 4, 3); }
+TEST(Update, RandomGrid) { family_case(1, 4, 3); }
+TEST(Update, RandomCollinear) { family_case(2, 4, 3); }
+TEST(Update, RandomCocircular) { family_case(3, 4, 3); }
 TEST(Update, RandomClusters2To30) { family_case(4, 3, 2); }
