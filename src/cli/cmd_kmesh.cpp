@@ -1,14 +1,16 @@
 // kmr kmesh: the Chapter 4 mesh (Fig. 4.2) of a point file: satellites converted rank by rank over
 // the deformable spanner, then the Delaunay triangulation of the output; --check runs the library's
 // brute-force lemma checks (L4.2.4, L4.2.5, L4.2.6, L4.2.9, L4.2.10, Delaunay, 9/2-well-spacedness).
-// Motion and updates run on kmesh/rebuild_simulation.hpp: the §4.3 certificates are advanced on the
+// Points at rest with --updates run on kmesh/update.hpp (the change-propagation update of Fig. 4.5).
+// Moving points run on kmesh/rebuild_simulation.hpp: the §4.3 certificates are advanced on the
 // lattice and every batch of failures (and every update) is repaired by a from-scratch rebuild; the
-// change-propagation update of Fig. 4.5 is not implemented (spec/kmesh.md).
+// kinetic events are not yet repaired by Fig. 4.5 (spec/kmesh.md).
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "cli/args.hpp"
@@ -21,6 +23,7 @@
 #include "kmesh/construction.hpp"
 #include "kmesh/invariants.hpp"
 #include "kmesh/rebuild_simulation.hpp"
+#include "kmesh/update.hpp"
 
 namespace kmr::cli {
 namespace {
@@ -136,28 +139,67 @@ int kmesh_command(const Argv& argv) {
   std::vector<InputPoint> in;
   for (auto& p : traj) in.push_back({p.x, p.y, p.vx, p.vy});
   auto t0 = std::chrono::steady_clock::now();
-  RebuildSimulation sim(in, static_cast<int>(bits));
   int status = 0;
   std::vector<CheckResult> checks;
-  auto check_now = [&](const std::string& when) {
-    if (!args.has("check")) return;
-    checks = check_all(sim.snapshot());
+  auto report = [&](const std::string& when) {
     for (auto& c : checks)
       for (auto& v : c.violations) {
         std::cerr << "kmr kmesh --check (" << when << "): " << c.claim << ": " << v << "\n";
         status = 1;
       }
   };
-  check_now("construction");
-  auto after = [&](const Batch& b) { check_now("batch at time " + b.time.to_decimal()); };
-  for (auto& u : updates) {
-    sim.run_until(u.t, after);
-    if (u.insert) sim.insert(u.p);
-    else sim.erase(u.p);
-    check_now(std::string(u.insert ? "insert" : "delete") + " at time " + u.t.to_decimal());
+  // Points at rest with insertions and deletions: the update of Fig. 4.5 (kmesh/update.hpp). Moving
+  // points: the reference KDS that repairs every batch by reconstruction (the kinetic events are not
+  // yet repaired by Fig. 4.5, spec/kmesh.md).
+  bool at_rest = std::all_of(in.begin(), in.end(), [](auto& p) { return p.vx == 0 && p.vy == 0; }) &&
+                 std::all_of(updates.begin(), updates.end(), [](auto& u) { return u.p.vx == 0 && u.p.vy == 0; });
+  std::vector<Batch> batches;
+  std::vector<UpdateStats> update_stats;
+  std::size_t events = 0;
+  Mesh m;
+  if (at_rest && !updates.empty()) {
+    Updater U(in);
+    m = U.mesh();
+    if (args.has("check")) checks = check_all_updated(m), report("construction");
+    for (auto& u : updates) {
+      auto steiner = [](const Mesh& x) {
+        std::set<std::pair<Dyadic, Dyadic>> s;
+        for (std::size_t v = 0; v < x.size(); ++v)
+          if (x.info[v].steiner) s.insert({x.spanner.position(int(v))[0], x.spanner.position(int(v))[1]});
+        return s;
+      };
+      auto before = steiner(m);
+      if (u.insert) U.insert(u.p);
+      else U.erase(u.p);
+      m = U.mesh();
+      auto now = steiner(m);
+      std::size_t kept = 0;
+      for (auto& q : before) kept += now.count(q);
+      batches.push_back({u.t, 0, u.insert ? "insert" : "delete", m.size(), kept, before.size()});
+      update_stats.push_back(U.last());
+      if (args.has("check"))
+        checks = check_all_updated(m), report(std::string(u.insert ? "insert" : "delete") + " at time " + u.t.to_decimal());
+    }
+  } else {
+    RebuildSimulation sim(in, static_cast<int>(bits));
+    auto check_now = [&](const std::string& when) {
+      if (!args.has("check")) return;
+      checks = check_all(sim.snapshot());
+      report(when);
+    };
+    check_now("construction");
+    auto after = [&](const Batch& b) { check_now("batch at time " + b.time.to_decimal()); };
+    for (auto& u : updates) {
+      sim.run_until(u.t, after);
+      if (u.insert) sim.insert(u.p);
+      else sim.erase(u.p);
+      check_now(std::string(u.insert ? "insert" : "delete") + " at time " + u.t.to_decimal());
+    }
+    sim.run_until(until, after);
+    m = sim.mesh_now();
+    batches = sim.batches();
+    events = sim.events();
   }
-  sim.run_until(until, after);
-  Mesh m = sim.mesh_now();
   double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   std::vector<KmeshVertex> vertices;  // in input units: printed and drawn
@@ -179,8 +221,8 @@ int kmesh_command(const Argv& argv) {
   auto certs = certificates(m);
   auto fail = first_failure(certs, static_cast<int>(bits), Dyadic(1 << 20));
   std::size_t event_batches = 0;
-  for (auto& b : sim.batches()) event_batches += b.what == "events";
-  out << "], \"events\": " << sim.events() << ", \"batches\": " << event_batches << ", \"certificates\": " << certs.size()
+  for (auto& b : batches) event_batches += b.what == "events";
+  out << "], \"events\": " << events << ", \"batches\": " << event_batches << ", \"certificates\": " << certs.size()
       << ", \"first_failure\": ";
   if (fail)
     out << "{\"interval\": " << fail->first.str() << ", \"time\": " << num((until + Dyadic(fail->first, -bits)).to_double())
@@ -217,10 +259,19 @@ int kmesh_command(const Argv& argv) {
     bool first = true;
     for (auto& [k, c] : per_kind) st << (first ? "" : ", ") << "\"" << k << "\": " << c, first = false;
     st << "}, \"batches\": [";
-    for (std::size_t i = 0; i < sim.batches().size(); ++i) {
-      auto& b = sim.batches()[i];
+    for (std::size_t i = 0; i < batches.size(); ++i) {
+      auto& b = batches[i];
       st << (i ? ", " : "") << "{\"time\": " << b.time.to_decimal() << ", \"what\": \"" << b.what << "\", \"events\": " << b.events
-         << ", \"vertices\": " << b.vertices << ", \"steiner_before\": " << b.steiner_before << ", \"steiner_kept\": " << b.steiner_kept << "}";
+         << ", \"vertices\": " << b.vertices << ", \"steiner_before\": " << b.steiner_before << ", \"steiner_kept\": " << b.steiner_kept;
+      if (i < update_stats.size()) {
+        auto& u = update_stats[i];
+        st << ", \"repair\": \"fig4.5\", \"affected\": " << u.affected << ", \"removed\": " << u.removed
+           << ", \"converted\": " << u.converted << ", \"ranks\": " << u.ranks << ", \"ops\": " << u.ops
+           << ", \"ops_delaunay\": " << u.ops_delaunay;
+      } else {
+        st << ", \"repair\": \"rebuild\"";
+      }
+      st << "}";
     }
     st << "]}\n";
   }

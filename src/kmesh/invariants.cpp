@@ -75,6 +75,7 @@ CheckResult check_spanner(const Spanner& S) {
   std::vector<std::size_t> expected(n, 0), stored(n, 0);
   for (int x = 0; x < n; ++x)
     for (int y = x + 1; y < n; ++y) {
+      if (!S.alive(x) || !S.alive(y)) continue;  // removed vertices (spanner_repair) are in no list
       Rank mt = std::min(S.top(x), S.top(y));
       if (!within_filtered(S.position(x), S.enclosure(x), S.position(y), S.enclosure(y), kC, mt)) continue;
       if (S.position(x) == S.position(y)) {
@@ -94,7 +95,7 @@ CheckResult check_spanner(const Spanner& S) {
     for (auto& [l, list] : S.all_neighbors(x))
       for (std::size_t i = 0; i < list.size(); ++i) {
         int y = list[i];
-        if ((i > 0 && list[i - 1] >= y) || y == x || y < 0 || y >= n || S.top(x) < l || S.top(y) < l ||
+        if ((i > 0 && list[i - 1] >= y) || y == x || y < 0 || y >= n || !S.alive(x) || !S.alive(y) || S.top(x) < l || S.top(y) < l ||
             !within(S.position(x), S.position(y), kC, l)) {
           add(r, "S3 neighbours: vertex " + std::to_string(x) + " lists " + std::to_string(y) + " wrongly at rank " + std::to_string(l));
           continue;
@@ -107,6 +108,7 @@ CheckResult check_spanner(const Spanner& S) {
   // S2 covering and parents; S4 kids.
   std::map<std::pair<int, Rank>, std::vector<int>> kids;
   for (int x = 0; x < n; ++x) {
+    if (!S.alive(x)) continue;
     if (x == S.root()) {
       if (S.top(x) != S.top_rank()) add(r, "root is not at the top rank");
       continue;
@@ -115,10 +117,10 @@ CheckResult check_spanner(const Spanner& S) {
     Rank t = S.top(x) + 1;
     bool covered = false;
     for (int y = 0; y < n && !covered; ++y)
-      if (y != x && S.top(y) >= t && within(S.position(x), S.position(y), 1, t)) covered = true;
+      if (y != x && S.alive(y) && S.top(y) >= t && within(S.position(x), S.position(y), 1, t)) covered = true;
     if (!covered) add(r, "S2 covering: no " + std::to_string(t) + "-center within 2^" + std::to_string(t) + " of " + std::to_string(x));
     int p = S.parent(x);
-    if (p < 0 || p >= n || S.top(p) < t || !within(S.position(x), S.position(p), 1, t))
+    if (p < 0 || p >= n || !S.alive(p) || S.top(p) < t || !within(S.position(x), S.position(p), 1, t))
       add(r, "S2 parent of " + std::to_string(x) + " is not a " + std::to_string(t) + "-center within 2^" + std::to_string(t));
     else
       kids[{p, S.top(x)}].push_back(x);
@@ -131,7 +133,8 @@ CheckResult check_spanner(const Spanner& S) {
       listed += k.size();
       if (!k.empty() && k != kids[{y, l}]) add(r, "S4 kids of " + std::to_string(y) + " at rank " + std::to_string(l));
     }
-  if (listed != static_cast<std::size_t>(n - 1)) add(r, "S4: " + std::to_string(listed) + " kids listed for " + std::to_string(n - 1) + " non-root vertices");
+  const std::size_t live = S.alive_count();
+  if (listed != live - 1) add(r, "S4: " + std::to_string(listed) + " kids listed for " + std::to_string(live - 1) + " non-root vertices");
   return r;
 }
 
@@ -160,7 +163,8 @@ CheckResult check_independent_set(const Mesh& m) {
   std::map<Rank, std::vector<const Considered*>> by_rank;
   for (auto& c : m.considered) by_rank[c.rank].push_back(&c);
   for (auto& [l, cs] : by_rank) {
-    int start = cs.front()->existing;  // vertices before the rank's first conversion
+    int start = cs.front()->existing;  // vertices before the rank's first conversion (the smallest)
+    for (auto* c : cs) start = std::min(start, c->existing);
     std::vector<Point2> pos;
     std::vector<bool> conv;
     for (auto* c : cs) {
@@ -360,6 +364,37 @@ CheckResult check_size_conformity(const Mesh& m) {
 std::vector<CheckResult> check_all(const Mesh& m) {
   return {check_spanner(m.spanner),       check_ball_empty(m), check_independent_set(m), check_empty_balls(m),
           check_voronoi_candidates(m),    check_min_ranks(m),  check_delaunay(m),        check_well_spaced(m),
+          check_size_conformity(m)};
+}
+
+CheckResult check_active_satellites(const Mesh& m) {
+  CheckResult r{"U1", {}, 0};
+  std::map<std::pair<int, Rank>, int> count, conv;
+  for (auto& c : m.considered) {
+    ++count[{c.nucleus, c.rank}];
+    conv[{c.nucleus, c.rank}] += c.converted;
+  }
+  std::size_t expected_total = 0;
+  for (int v = 0; v < static_cast<int>(m.n()) && m.n() >= 2; ++v) {
+    Rank rho = m.info[v].rank;
+    for (Rank l = rho; l <= m.highest; ++l) {
+      bool act = l == rho || conv[{v, l - 1}] > 0;
+      if (!act) break;
+      expected_total += 12;
+      if (count[{v, l}] != 12)
+        add(r, "vertex " + std::to_string(v) + " active at rank " + std::to_string(l) + " has " +
+                   std::to_string(count[{v, l}]) + " satellites considered");
+    }
+  }
+  if (m.considered.size() != expected_total)
+    add(r, std::to_string(m.considered.size()) + " satellites considered, " + std::to_string(expected_total) +
+               " belong to active vertices");
+  return r;
+}
+
+std::vector<CheckResult> check_all_updated(const Mesh& m) {
+  return {check_spanner(m.spanner),    check_active_satellites(m), check_independent_set(m), check_empty_balls(m),
+          check_voronoi_candidates(m), check_min_ranks(m),         check_delaunay(m),        check_well_spaced(m),
           check_size_conformity(m)};
 }
 

@@ -40,5 +40,11 @@ CheckResult check_delaunay(const Mesh& m);
 CheckResult check_well_spaced(const Mesh& m);        // L4.2.3 / L4.2.7, measured max |vc|/NN(v)
 CheckResult check_size_conformity(const Mesh& m);    // L4.2.8, measured max lfs/NN
 std::vector<CheckResult> check_all(const Mesh& m);
+// U1 of kmesh/update.hpp: the considered satellites are exactly the 12 per rank of the active
+// vertices (ρ_v ≤ ℓ ≤ Λ+4, and ℓ = ρ_v or v has a converted (ℓ−1)-satellite).
+CheckResult check_active_satellites(const Mesh& m);
+// After a Fig. 4.5 update: check_all without L4.2.4 (which reads the construction's order), with U1;
+// L4.2.5 then reads as L4.3.2 (a maximal independent subset per rank of the up-to-date graph).
+std::vector<CheckResult> check_all_updated(const Mesh& m);
 
 }  // namespace kmr::kmesh

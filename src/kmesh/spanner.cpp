@@ -87,6 +87,8 @@ void Spanner::remove_kid(int y, Rank l, int x) {
 }
 
 void Spanner::add_neighbor_pair(int x, int y, Rank l) {
+  touched.push_back(x);
+  touched.push_back(y);
   sorted_insert(nodes_[x].nbrs[l], y);
   sorted_insert(nodes_[y].nbrs[l], x);
 }
@@ -120,6 +122,7 @@ Spanner Spanner::build(const std::vector<Point2>& pts, Rank extra_top) {
   const int n = static_cast<int>(pts.size());
   KMR_CHECK(n >= 1, "Spanner::build of no points");
   s.nodes_.resize(n);
+  s.alive_count_ = static_cast<std::size_t>(n);
   for (int i = 0; i < n; ++i) s.nodes_[i].p = pts[i], s.nodes_[i].e = enclose(pts[i]);
   Rank big = 0;
   for (int w = 1; w < n; ++w) big = (w == 1) ? min_rank_within(pts[0], pts[w], 1)
@@ -183,6 +186,7 @@ int Spanner::insert(const Point2& p, Rank top, const std::map<Rank, std::vector<
                     int proxy) {
   int id = static_cast<int>(nodes_.size());
   nodes_.push_back(Node{p, enclose(p), top, parent, {}, {}});
+  ++alive_count_;
   for (auto& [r, list] : nbrs) {
     KMR_CHECK(r <= top, "insert: neighbours above the top rank");
     for (int y : list) add_neighbor_pair(id, y, r);

@@ -21,6 +21,19 @@
 //  * centers_near(p, ℓ, hint): all ℓ-centers within c·2^ℓ of the point p, given an (ℓ+1)-center
 //    `hint` within 15·2^ℓ of p: they are children of hint or of its (ℓ+1)-neighbours.
 //  * centers_near_below(p, ℓ, above): the same at rank ℓ from the list at rank ℓ+1.
+//  * centers_within(p, ℓ): the same by a descent from the root (no hint needed).
+//
+// Dynamic maintenance (kmesh/spanner_repair.cpp, §4.1.2 after Gao–Guibas–Nguyen), each keeping
+// S1–S4 over the live vertices (tests/kmesh/spanner_repair_test.cpp, brute force after every step):
+//  * insert_point(p): p joins M_ℓ for every ℓ below the lowest rank where an ℓ-center covers it
+//    (within 2^ℓ); its parent is the nearest covering center (ties: smaller id);
+//  * remove(x) (the thesis's Remove): x leaves every list; each orphaned kid takes the nearest
+//    covering center as parent, or is promoted one rank (and is an orphan there), bottom-up;
+//    removing the root makes the live vertex of highest top (smallest id) the root;
+//  * relocate(X, positions): the kinetic repair of a batch: the vertices X (the ends of the failed
+//    certificates) are detached together, the orphans repaired, and X re-inserted at the new
+//    positions, in id order. It assumes the certificates among the other vertices still hold.
+// Removed vertices keep their id (alive(x) is false) so that ids stay stable.
 #include <cstdint>
 #include <map>
 #include <vector>
@@ -56,7 +69,9 @@ class Spanner {
   int parent(int x) const { return nodes_[x].parent; }
   Rank top_rank() const { return top_rank_; }
   Rank lambda() const { return lambda_; }  // Λ of the input
-  int root() const { return 0; }
+  int root() const { return root_; }
+  bool alive(int x) const { return nodes_[x].alive; }
+  std::size_t alive_count() const { return alive_count_; }
   const std::vector<int>& neighbors(int x, Rank l) const;
   const std::map<Rank, std::vector<int>>& all_neighbors(int x) const { return nodes_[x].nbrs; }
   const std::map<Rank, std::vector<int>>& all_kids(int x) const { return nodes_[x].kids; }
@@ -68,6 +83,16 @@ class Spanner {
 
   std::vector<int> centers_near(const Point2& p, Rank l, int hint) const;
   std::vector<int> centers_near_below(const Point2& p, Rank l, const std::vector<int>& above) const;
+  std::vector<int> centers_within(const Point2& p, Rank l) const { return descend(p, l, {}); }
+
+  // Dynamic and kinetic maintenance (kmesh/spanner_repair.cpp).
+  int insert_point(const Point2& p, int reuse = -1);  // reuse: a dead id to give it
+  void remove(int x);
+  void relocate(const std::vector<int>& xs, const std::vector<Point2>& positions);
+  // Vertices whose neighbour lists changed since the caller last cleared it (for activation ranks).
+  std::vector<int> touched;
+  // The same spanner over the live vertices renumbered by new_id (−1 for a dead vertex).
+  Spanner compacted(const std::vector<int>& new_id) const;
 
   // Insertion of a new vertex (Convert, TryToPromote): `nbrs[ℓ]` are its ℓ-neighbours for the ranks
   // it is a center at and has neighbours; top its maximum rank; parent (or −1 with a proxy while
@@ -90,12 +115,20 @@ class Spanner {
     int parent = -1;
     std::map<Rank, std::vector<int>> nbrs;
     std::map<Rank, std::vector<int>> kids;
+    bool alive = true;
   };
+  // spanner_repair.cpp
+  std::vector<int> descend(const Point2& p, Rank l, const std::vector<int>& floating) const;
+  void raise_root();
+  std::vector<int> detach(const std::vector<int>& xs);
+  void repair_orphans(std::vector<int> orphans);
   void add_kid(int y, Rank l, int x);
   void remove_kid(int y, Rank l, int x);
   void add_neighbor_pair(int x, int y, Rank l);
   std::vector<Node> nodes_;
   Rank top_rank_ = 0, lambda_ = 0;
+  int root_ = 0;
+  std::size_t alive_count_ = 0;
 };
 
 }  // namespace kmr::kmesh

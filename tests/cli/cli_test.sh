@@ -84,6 +84,12 @@ printf '0 + 9 9 0 0\n0.25 - 9 9 0 0\n' >"$tmp/km6u.txt"
 "$kmr" kmesh "$tmp/km6.txt" --until 0.25 --lattice-bits 2 --updates "$tmp/km6u.txt" --check --stats "$tmp/km6.json" >/dev/null 2>"$tmp/err"
 if [ $? -eq 0 ] && grep -qF '"what": "insert"' "$tmp/km6.json" && grep -qF '"what": "delete"' "$tmp/km6.json"; then passed=$((passed+1)); else
   failed=$((failed+1)); echo "FAIL kmesh-updates"; cat "$tmp/err"; fi
+# Points at rest with updates: the Fig. 4.5 update repairs them (not the rebuild), checked by --check.
+printf '0 0\n5 1\n2 7\n' >"$tmp/km10.txt"
+printf '0 + 4 4 0 0\n0 - 5 1 0 0\n' >"$tmp/km10u.txt"
+"$kmr" kmesh "$tmp/km10.txt" --updates "$tmp/km10u.txt" --check --stats "$tmp/km10.json" >/dev/null 2>"$tmp/err"
+if [ $? -eq 0 ] && [ "$(grep -o '"repair": "fig4.5"' "$tmp/km10.json" | wc -l)" -eq 2 ]; then passed=$((passed+1)); else
+  failed=$((failed+1)); echo "FAIL kmesh-updates-at-rest"; cat "$tmp/err"; fi
 # (0,0) moving (1,1) meets (4,4) at t = 4: refused when T ≥ 4, accepted before.
 printf '0 0 1 1\n4 4\n' >"$tmp/km7.txt"
 expect_error kmesh-collision-later 'collide at time 4' -- kmesh "$tmp/km7.txt" --until 5

@@ -1,0 +1,108 @@
+#pragma once
+// The update of Fig. 4.5 (§4.3) for dynamic insertions and deletions of input points: change
+// propagation over ranks with the fully affected sets F_ℓ (satellites whose conversion decision
+// may change), per rank Remove / Convert, the promotions of the spanner's repair, then the Delaunay
+// triangulation of the result.
+//
+// State kept between updates: the spanner S over M (kmesh/spanner_repair.cpp keeps it valid), the
+// spanner S_N over the input alone (its minimum ranks are the activation ranks ρ_v), and one record
+// per considered satellite (converted or not; for one not converted, a witness vertex in its ball).
+//
+// Invariants the propagation rests on (checked by brute force after every update in the tests,
+// kmesh/invariants.hpp on mesh()):
+//  U1 the satellites considered at rank ℓ are exactly the 12 ℓ-satellites of the vertices active at
+//     ℓ (ρ_v = ℓ, or v has a converted (ℓ−1)-satellite), for ℓ ≤ Λ+4;
+//  U2 (L4.3.2) at each rank ℓ a considered satellite is converted iff no vertex of rank ≤ ℓ (input,
+//     or Steiner converted at a rank ≤ ℓ) lies in its closed ball B(s, 2^(ℓ−2)): a maximal
+//     independent subset of the proximity graph of rank ℓ;
+//  U3 the witness of a satellite not converted is a vertex of rank ≤ ℓ in its ball.
+// So a decision can change only if (a) the nucleus's activity at ℓ changes, (b) a vertex enters a
+// converted satellite's ball (an insertion, or a conversion at a lower rank), or (c) the witness of
+// one not converted goes: these put the satellite in F_ℓ, and ranks are repaired in increasing order,
+// so every change reaches only higher ranks or the current one before its Convert phase.
+//
+// Deviations from the thesis (spec/kmesh.md): a Steiner vertex enters the spanner by the general
+// insertion (its top is the rank below the lowest covering one) instead of Convert's ℓ−2 … ℓ plus
+// TryToPromote, and the partially affected set P_ℓ is the spanner's own orphan repair (re-parent or
+// promote) inside Remove; Λ (the top rank Λ+4) is recomputed by a scan over the input (O(n)); the
+// Delaunay stage recomputes every star (global, O(|M|)), counted apart from the local stages.
+#include <cstdint>
+#include <map>
+#include <set>
+#include <vector>
+
+#include "kmesh/construction.hpp"
+
+namespace kmr::kmesh {
+
+struct UpdateStats {
+  std::size_t affected = 0;   // satellites taken from the F_ℓ sets (with repeats over ranks)
+  std::size_t removed = 0, converted = 0, ranks = 0;
+  std::uint64_t ops = 0;          // spanner and propagation operations of stages 1–2 (local)
+  std::uint64_t ops_delaunay = 0; // stage 3 (global here)
+};
+
+class Updater {
+ public:
+  // The construction of Fig. 4.2 (kmesh/construction.hpp) on static points, adopted as the state.
+  explicit Updater(std::vector<InputPoint> points);
+  // Fig. 4.5 for one dynamic change; InputError (nothing changed) for a duplicate or a missing point,
+  // or the deletion of the last point.
+  void insert(const InputPoint& p);
+  void erase(const InputPoint& p);
+  // The current mesh, renumbered canonically (inputs sorted, then Steiner vertices by rank, nucleus,
+  // ray), with its Delaunay triangulation (stage 3) and `considered` rebuilt from the records
+  // (`existing` = the vertices of lower rank, so L4.2.5 reads as U2).
+  Mesh mesh();
+  const UpdateStats& last() const { return last_; }
+  std::size_t input_size() const { return inputs_.size(); }
+  std::uint64_t total_ops() const { return total_ops_; }
+
+ private:
+  struct Input {
+    InputPoint p;
+    int s = -1, sn = -1;  // ids in S and in S_N
+    Rank rho = 0;
+  };
+  struct Sat {
+    bool converted = false;
+    int vertex = -1;   // id in S when converted
+    int witness = -1;  // id in S of a vertex in the ball when not
+  };
+  using Key = std::tuple<Rank, int, int>;  // (rank, nucleus input key, ray)
+
+  Point2 sat_position(int nucleus, int ray, Rank l) const;
+  bool active(int nucleus, Rank l) const;
+  bool has_converted(int nucleus, Rank l) const;
+  int ball_witness(const Point2& s, Rank l, int nucleus) const;
+  void affect(const Key& k) { F_[std::get<0>(k)].insert(k); }
+  void affect_rank(int nucleus, Rank l);
+  void set_witness(const Key& k, int w);
+  void drop_witness(const Key& k);
+  Rank recompute_highest();
+  void refresh_rhos(const std::vector<int>& sn_touched);
+  void propagate();
+  void mark(const Key& k);
+  void remove_steiner(const Key& k);
+  void remove_balls_containing(const Point2& p, Rank above);
+  void decide(const Key& k);
+  void erase_record(const Key& k);
+  void finish(std::uint64_t ops0);
+
+  std::vector<InputPoint> sorted_;  // the live input (for messages and rebuilds)
+  std::map<int, Input> inputs_;     // by input key (stable: the first ids are the sorted input)
+  std::map<int, int> sn_to_key_;    // S_N id → input key
+  int next_key_ = 0;
+  Spanner S_, SN_;
+  std::vector<VertexInfo> info_;  // per id of S (nucleus = input key); steiner=false, nucleus=-1 when dead
+  std::map<Key, Sat> sats_;
+  std::map<int, std::set<Key>> witness_of_;  // S id → satellites it witnesses
+  std::map<Rank, std::set<Key>> F_;
+  std::map<int, std::set<Key>> by_nucleus_;
+  std::map<std::pair<Rank, int>, bool> before_;  // (rank, nucleus) → had a converted satellite there
+  Rank lowest_ = 0, highest_ = 0;
+  UpdateStats last_;
+  std::uint64_t total_ops_ = 0;
+};
+
+}  // namespace kmr::kmesh

@@ -1,0 +1,131 @@
+// §4.3, Fig. 4.5: the dynamic update (kmesh/update.hpp). After every insertion and deletion the
+// brute-force checks of kmesh/invariants.hpp hold on the updated mesh (spanner S1–S4, U1 active
+// satellites, L4.3.2 as the maximal-independent-set check per rank, L4.2.6, L4.2.9, L4.2.10,
+// Delaunay, 9/2-well-spacedness); the checks share no code with the update. Stability is measured
+// against a from-scratch construction of the same input (the fraction of Steiner vertices shared).
+#include <gtest/gtest.h>
+
+#include <random>
+#include <set>
+
+#include "exact/error.hpp"
+#include "kmesh/invariants.hpp"
+#include "kmesh/update.hpp"
+
+using namespace kmr::kmesh;
+using kmr::exact::Integer;
+
+namespace {
+
+InputPoint ip(long long x, long long y) { return {Integer(x), Integer(y)}; }
+
+std::string failures(const std::vector<CheckResult>& rs) {
+  std::string s;
+  for (auto& r : rs)
+    if (!r.ok()) s += r.claim + ": " + r.violations[0] + "; ";
+  return s;
+}
+
+std::set<std::pair<Dyadic, Dyadic>> steiner_positions(const Mesh& m) {
+  std::set<std::pair<Dyadic, Dyadic>> s;
+  for (std::size_t v = 0; v < m.size(); ++v)
+    if (m.info[v].steiner) s.insert({m.spanner.position(int(v))[0], m.spanner.position(int(v))[1]});
+  return s;
+}
+
+// Families: 0 uniform, 1 grid, 2 collinear, 3 cocircular (radius 25), 4 two clusters 2^30 apart.
+InputPoint draw(int family, std::mt19937_64& rng) {
+  std::uniform_int_distribution<long long> d(0, 64), g(0, 4), b(0, 1);
+  static const long long circle[][2] = {{25, 0},  {24, 7},   {20, 15},  {15, 20},  {7, 24},  {0, 25},
+                                        {-7, 24}, {-15, 20}, {-20, 15}, {-24, 7},  {-25, 0}, {-24, -7},
+                                        {-20, -15}, {-15, -20}, {-7, -24}, {0, -25}};
+  switch (family) {
+    case 0: return ip(d(rng), d(rng));
+    case 1: return ip(8 * g(rng), 8 * g(rng));
+    case 2: return ip(d(rng), 0);
+    case 3: {
+      auto& c = circle[std::uniform_int_distribution<int>(0, 15)(rng)];
+      return ip(c[0], c[1]);
+    }
+    default: return ip(d(rng) % 8 + (b(rng) << 30), d(rng) % 8);
+  }
+}
+
+// Runs `steps` random updates from `n0` points, checking after each; returns the mean stability.
+double run(int family, int n0, int steps, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<InputPoint> pts;
+  std::set<InputPoint> have;
+  while (static_cast<int>(pts.size()) < n0) {
+    InputPoint p = draw(family, rng);
+    if (have.insert(p).second) pts.push_back(p);
+  }
+  Updater U(pts);
+  double stab = 0;
+  int counted = 0;
+  for (int step = 0; step < steps; ++step) {
+    std::string what;
+    if (pts.size() > 2 && step % 2 == 1) {
+      std::size_t i = std::uniform_int_distribution<std::size_t>(0, pts.size() - 1)(rng);
+      U.erase(pts[i]);
+      have.erase(pts[i]);
+      what = "delete (" + pts[i].x.str() + ", " + pts[i].y.str() + ")";
+      pts.erase(pts.begin() + static_cast<std::ptrdiff_t>(i));
+    } else {
+      InputPoint p = draw(family, rng);
+      if (!have.insert(p).second) continue;
+      U.insert(p);
+      pts.push_back(p);
+      what = "insert (" + p.x.str() + ", " + p.y.str() + ")";
+    }
+    Mesh m = U.mesh();
+    std::string f = failures(check_all_updated(m));
+    EXPECT_EQ(f, "") << "family " << family << " step " << step << " " << what;
+    if (!f.empty()) return -1;
+    Mesh fresh = construct(pts);
+    auto a = steiner_positions(m), b = steiner_positions(fresh);
+    std::size_t shared = 0;
+    for (auto& p : a) shared += b.count(p);
+    stab += double(shared) / double(std::max<std::size_t>(1, std::max(a.size(), b.size())));
+    ++counted;
+  }
+  return counted ? stab / counted : 1;
+}
+
+}  // namespace
+
+TEST(Update, ConstructionSatisfiesTheUpdateInvariants) {
+  // The order-free checks accept the construction's own result (U1, L4.2.5 as U2).
+  Mesh m = construct({ip(0, 0), ip(5, 1), ip(2, 7), ip(9, 9)});
+  EXPECT_EQ(failures(check_all_updated(m)), "");
+  Updater U({ip(0, 0), ip(5, 1), ip(2, 7), ip(9, 9)});
+  Mesh u = U.mesh();
+  EXPECT_EQ(steiner_positions(u), steiner_positions(m));
+  EXPECT_EQ(u.triangles, m.triangles);
+}
+
+TEST(Update, BadUpdatesAreRefusedAndChangeNothing) {
+  Updater U({ip(0, 0), ip(5, 1)});
+  std::size_t before = U.mesh().size();
+  EXPECT_THROW(U.insert(ip(5, 1)), kmr::InputError);
+  EXPECT_THROW(U.erase(ip(7, 7)), kmr::InputError);
+  U.erase(ip(0, 0));
+  EXPECT_THROW(U.erase(ip(5, 1)), kmr::InputError);
+  U.insert(ip(0, 0));
+  EXPECT_EQ(failures(check_all_updated(U.mesh())), "");
+  EXPECT_GT(before, 2u);
+}
+
+void family_case(int family, int n0, int steps) {
+  const char* names[] = {"uniform", "grid", "collinear", "cocircular", "clusters 2^30"};
+  double s = run(family, n0, steps, 300 + family);
+  ASSERT_GE(s, 0) << names[family];
+  testing::Test::RecordProperty("stability", std::to_string(s));
+  std::printf("family %-14s mean Steiner fraction shared with a from-scratch construction: %.3f\n", names[family], s);
+}
+
+TEST(Update, RandomUniform) { family_case(0, 4, 3); }
+TEST(Update, RandomGrid) { family_case(1, 4, 3); }
+TEST(Update, RandomCollinear) { family_case(2, 4, 3); }
+TEST(Update, RandomCocircular) { family_case(3, 4, 3); }
+TEST(Update, RandomClusters2To30) { family_case(4, 3, 2); }
