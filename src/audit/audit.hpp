@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,7 +34,14 @@ struct Verdict {
   std::vector<svg::Plot> plots;
   void plot(svg::Plot p) { plots.push_back(std::move(p)); }
   std::string thesis;  // the thesis's (or its cited anchor's) own figure for this claim, when it gives one
+  // A speed or size target the issue or the thesis sets for a measured figure, and whether this run
+  // met it. `pass` stays the correctness verdict; a missed target shows as MISSED, never as PASS.
+  std::string target;
+  std::optional<bool> target_met;
+  void set_target(std::string what, bool met) { target = std::move(what), target_met = met; }
 };
+// The word for a verdict: FAIL (pass is false), MISSED (pass, but a stated target was not met), PASS.
+const char* verdict_word(const Verdict& v);
 
 struct Check {
   std::string claim;  // claim ID from spec/claims.md, e.g. "A2.1-lattice"

@@ -325,8 +325,8 @@ Verdict kinetic_initial(const Options& o) {
     v.figure("initial ÷ static, n = " + std::to_string(t.n), fmt(t.initial / t.statics));
     worst = std::max(worst, t.initial / t.statics);
   }
-  v.summary = std::string("initial kinetic run ÷ exact static run on the same points (one run each, static best of 5): target ≤ 5 ") +
-              (worst <= 5 ? "met" : "NOT met");
+  v.summary = "initial kinetic run ÷ exact static run on the same points (one run each, static best of 5)";
+  v.set_target("initial ÷ static ≤ 5 at every size (issue 9)", worst <= 5);
   v.thesis = "Fig. 2.4: about 15x";
   return v;
 }
@@ -342,8 +342,15 @@ Verdict kinetic_per_event(const Options& o) {
 Verdict kinetic_speedup(const Options& o) {
   Verdict v;
   v.pass = true;
-  for (const Timing& t : timings(o)) v.figure("static ÷ per-event propagation, n = " + std::to_string(t.n), fmt(t.statics / t.per_event));
-  v.summary = "exact static from scratch ÷ mean propagation per event (target ≥ 100 at n = 10^4: not reached, see spec/hull.md)";
+  double last = 0;
+  for (const Timing& t : timings(o)) {
+    v.figure("static ÷ per-event propagation, n = " + std::to_string(t.n), fmt(t.statics / t.per_event));
+    last = t.statics / t.per_event;
+  }
+  v.summary = "exact static from scratch ÷ mean propagation per event";
+  // The issue's target is at n = 10^4 (bench/hull); the audit's largest size stands in for it, and the
+  // speedup grows with n, so a miss here is a miss at the audit's sizes, said as such.
+  v.set_target("static ÷ one event's propagation ≥ 100 (issue 9, at n = 10^4; judged here at the audit's largest n)", last >= 100);
   v.thesis = "Fig. 2.6: speedup grows with n (orders of magnitude)";
   return v;
 }

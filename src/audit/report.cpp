@@ -106,7 +106,7 @@ const char* kCss = R"(body{font-family:sans-serif;max-width:70em;margin:1em auto
 h1{font-size:1.6em}h2{border-bottom:2px solid #ccc;margin-top:2em}h3{margin-bottom:.3em}
 .claim{border:1px solid #ddd;border-radius:4px;padding:.5em 1em;margin:1em 0}
 .v{font-weight:bold;padding:0 .4em;border-radius:3px}
-.PASS{background:#d7f0d7;color:#155d15}.FAIL{background:#f7d4d4;color:#8a1010}.TODO{background:#eee;color:#555}
+.PASS{background:#d7f0d7;color:#155d15}.FAIL{background:#f7d4d4;color:#8a1010}.MISSED{background:#f7e7c4;color:#7a4a00}.TODO{background:#eee;color:#555}
 .TESTS{background:#dde8f7;color:#1b3d6d}.MEASURED{background:#e6def5;color:#45226b}.NOTRUN{background:#f5ecd0;color:#6b5000}.NOTCHECKABLE{background:#eee;color:#555}
 table{border-collapse:collapse;margin:.4em 0}td,th{border:1px solid #ddd;padding:.15em .5em;text-align:left;vertical-align:top}
 code{background:#f4f4f4;padding:0 .2em}dt{font-weight:bold;margin-top:.3em}dd{margin-left:1.5em}
@@ -198,9 +198,11 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
       }
     std::string status = row ? row->status : "";
     if (!e.results.empty()) {
-      bool pass = true;
-      for (const Result* r : e.results) pass = pass && r->verdict.pass;
-      e.verdict = pass ? "PASS" : "FAIL";
+      e.verdict = "PASS";  // the worst of its checks: FAIL over MISSED over PASS
+      for (const Result* r : e.results) {
+        std::string w = verdict_word(r->verdict);
+        if (w == "FAIL" || (w == "MISSED" && e.verdict == "PASS")) e.verdict = w;
+      }
       for (const Result* r : e.results) e.replay.push_back(r->replay.empty() ? audit_command(r->claim, options) : r->replay);
     } else if (status.rfind("todo", 0) == 0) {
       e.verdict = "TODO";
@@ -252,10 +254,11 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
   std::string mode = std::string(options.quick ? "--quick" : "default sizes") + ", seed " + std::to_string(options.seed) +
                      (options.only.empty() ? "" : ", --only " + options.only);
   std::string tally;
-  for (const char* v : {"PASS", "FAIL", "TESTS", "MEASURED", "NOT RUN", "TODO", "NOT CHECKABLE"})
+  for (const char* v : {"PASS", "MISSED", "FAIL", "TESTS", "MEASURED", "NOT RUN", "TODO", "NOT CHECKABLE"})
     if (counts[v]) tally += (tally.empty() ? "" : ", ") + std::to_string(counts[v]) + " " + v;
   const char* legend =
-      "PASS/FAIL: the `kmr audit` check(s) of the claim ran in this audit. TESTS: checked by the test suite, not by the "
+      "PASS/FAIL: the `kmr audit` check(s) of the claim ran in this audit. MISSED: the check passed, but a measured figure "
+      "missed the speed or size target stated for it. TESTS: checked by the test suite, not by the "
       "audit (replay with ctest; property tests run with RC_PARAMS=\"seed=20121\", which `ctest -V` prints). MEASURED: by a "
       "benchmark outside the audit; the figures are the ledger's (include a benchmark's results with `kmr audit --include FILE`). NOT RUN: an audit "
       "check exists but this audit did not run it. TODO: not checked yet (reason given). NOT CHECKABLE: see the reason.";
@@ -276,9 +279,11 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
         md << "- **Claim.** " << e.row->claim << "\n- **Where.** " << e.row->where << "\n- **How it is checked.** " << e.row->check
            << "\n- **Tests.** " << e.row->tests << "\n";
       for (const Result* r : e.results) {
-        md << "- **Verdict (" << (e.via ? "via audit check " : "") << md_text(r->claim) << ").** " << (r->verdict.pass ? "PASS" : "FAIL")
+        md << "- **Verdict (" << (e.via ? "via audit check " : "") << md_text(r->claim) << ").** " << verdict_word(r->verdict)
            << " — " << md_text(r->title) << (r->verdict.summary.empty() ? "" : ": " + md_text(r->verdict.summary)) << " ("
            << fmt(r->seconds) << " s)\n";
+        if (r->verdict.target_met)
+          md << "- **Target.** " << md_text(r->verdict.target) << (*r->verdict.target_met ? " — met" : " — **missed**") << "\n";
         if (!r->verdict.thesis.empty()) md << "- **Thesis's figure.** " << md_text(r->verdict.thesis) << "\n";
       }
       if (e.verdict == "TODO") md << "- **Not checked yet:** " << todo_reason(e.row->status) << "\n";
@@ -325,9 +330,11 @@ ReportFiles write_report(const std::string& dir, const std::vector<Result>& resu
           << "</dd>\n<dt>How it is checked</dt><dd>" << inline_html(e.row->check) << "</dd>\n<dt>Tests</dt><dd>"
           << inline_html(e.row->tests) << "</dd>\n";
       for (const Result* r : e.results) {
-        h << "<dt>Verdict (" << (e.via ? "via audit check " : "") << html_escape(r->claim) << ")</dt><dd><span class=\"v " << (r->verdict.pass ? "PASS" : "FAIL") << "\">"
-          << (r->verdict.pass ? "PASS" : "FAIL") << "</span> " << html_escape(r->title)
+        h << "<dt>Verdict (" << (e.via ? "via audit check " : "") << html_escape(r->claim) << ")</dt><dd><span class=\"v " << verdict_word(r->verdict) << "\">"
+          << verdict_word(r->verdict) << "</span> " << html_escape(r->title)
           << (r->verdict.summary.empty() ? "" : ": " + html_escape(r->verdict.summary)) << " (" << fmt(r->seconds) << " s)</dd>\n";
+        if (r->verdict.target_met)
+          h << "<dt>Target</dt><dd>" << html_escape(r->verdict.target) << (*r->verdict.target_met ? " — met" : " — <b>missed</b>") << "</dd>\n";
         if (!r->verdict.thesis.empty()) h << "<dt>Thesis's figure</dt><dd>" << inline_html(r->verdict.thesis) << "</dd>\n";
       }
       if (e.verdict == "TODO") h << "<dt>Not checked yet</dt><dd>" << inline_html(todo_reason(e.row->status)) << "</dd>\n";

@@ -117,8 +117,14 @@ std::vector<Result> run_checks(const Options& options) {
   return results;
 }
 
+const char* verdict_word(const Verdict& v) {
+  if (!v.pass) return "FAIL";
+  if (v.target_met.has_value() && !*v.target_met) return "MISSED";
+  return "PASS";
+}
+
 void print_table(const std::vector<Result>& results, std::ostream& out) {
-  int failed = 0;
+  int failed = 0, missed = 0;
   std::size_t w = 28;  // the claim column fits the longest ID
   for (const Result& r : results) w = std::max(w, r.claim.size() + 2);
   const std::string indent(w + 8, ' ');
@@ -126,11 +132,15 @@ void print_table(const std::vector<Result>& results, std::ostream& out) {
   for (const Result& r : results) {
     const Verdict& v = r.verdict;
     if (!v.pass) ++failed;
-    out << std::left << std::setw(int(w)) << r.claim << std::setw(6) << (v.pass ? "PASS" : "FAIL") << "  " << r.title << "\n";
+    if (std::string(verdict_word(v)) == "MISSED") ++missed;
+    out << std::left << std::setw(int(w)) << r.claim << std::setw(6) << verdict_word(v) << "  " << r.title << "\n";
     if (!v.summary.empty()) out << indent << v.summary << "\n";
+    if (v.target_met) out << indent << "target: " << v.target << (*v.target_met ? " (met)" : " (MISSED)") << "\n";
     for (auto& [name, value] : v.figures) out << indent << name << " = " << value << "\n";
   }
-  out << results.size() - failed << " passed, " << failed << " failed\n";
+  out << results.size() - failed << " passed, " << failed << " failed";
+  if (missed) out << " (" << missed << " of the passed missed a stated target: MISSED)";
+  out << "\n";
 }
 
 void write_json(const std::vector<Result>& results, std::ostream& json) {
@@ -141,7 +151,9 @@ void write_json(const std::vector<Result>& results, std::ostream& json) {
     json << (k ? "," : "") << "\n {\"claim\":" << json_string(r.claim) << ",\"title\":" << json_string(r.title)
          << ",\"pass\":" << (v.pass ? "true" : "false") << ",\"summary\":" << json_string(v.summary)
          << ",\"seconds\":" << json_number(r.seconds) << ",\"kmr_version\":" << json_string(version())
-         << ",\"thesis\":" << json_string(v.thesis) << ",\"replay\":" << json_string(r.replay) << ",\"figures\":{";
+         << ",\"thesis\":" << json_string(v.thesis) << ",\"replay\":" << json_string(r.replay)
+         << ",\"verdict\":" << json_string(verdict_word(v)) << ",\"target\":" << json_string(v.target)
+         << ",\"target_met\":" << (v.target_met ? (*v.target_met ? "true" : "false") : "null") << ",\"figures\":{";
     for (std::size_t i = 0; i < v.figures.size(); ++i)
       json << (i ? "," : "") << json_string(v.figures[i].first) << ":" << json_string(v.figures[i].second);
     json << "},\"plots\":[";
@@ -208,6 +220,10 @@ std::vector<Result> read_json(const std::string& path) {
       r.verdict.summary = c.get<std::string>("summary");
       r.verdict.thesis = c.get<std::string>("thesis", "");
       r.replay = c.get<std::string>("replay", "");
+      r.verdict.target = c.get<std::string>("target", "");
+      std::string met = c.get<std::string>("target_met", "null");  // results written before targets existed: none
+      if (met == "true" || met == "false") r.verdict.target_met = met == "true";
+      else if (met != "null") throw std::invalid_argument("target_met must be true, false or null, not '" + met + "'");
       r.seconds = read_number(c.get<std::string>("seconds"));
       for (const auto& [name, value] : c.get_child("figures")) r.verdict.figure(name, value.data());
       for (const auto& [k, p] : c.get_child("plots", kNoPlots)) {

@@ -226,6 +226,14 @@ Verdict overhead_and_speedup(const Options& o) {
   }
   v.thesis = "CEAL (PLDI'09) / DeltaML anchors cited in §1.3: overhead <= 10x (map, filter, sum), <= 20x (sorts, quickhull); "
              "speedup >= 10^3 resp. >= 10^2 at n = 10^6";
+  bool lean = true;  // issue 8 §2's size-independent targets (its speedup targets are at n = 10^6)
+  for (const auto& r : rows) {
+    bool simple = r.program == "map" || r.program == "filter" || r.program == "sum" || r.program == "exptree";
+    lean = lean && r.overhead <= (simple ? 10.0 : 20.0);
+    if (r.program == "map") lean = lean && r.bytes_per_element <= 150;
+  }
+  v.set_target("overhead ≤ 10× (map, filter, sum, exptree), ≤ 20× (quicksort, mergesort, quickhull); map trace ≤ 150 "
+               "B/element (issue 8 §2; the speedup targets are at n = 10^6, spec/sac.md)", lean);
   v.pass = ok;
   v.summary = "kmr bench sac at n=" + std::to_string(n) + " (" + std::to_string(edits) +
               " edits): figures reported; pass = outputs equal the static twins (targets at 1e6: see spec/sac.md)";

@@ -270,4 +270,50 @@ TEST(Report, IncludedResultsRoundTripAndLandOnTheirLedgerRow) {
   std::filesystem::remove_all(dir);
 }
 
+// A check that passes but misses its stated target is MISSED in the table, the JSON (which reads
+// back) and the report, never PASS; a met target stays PASS, a failed check FAIL.
+TEST(Report, AMissedTargetIsMissedNotPass) {
+  Result missed, met, failed;
+  missed.claim = "I2-root-solver-speed", missed.title = "m";
+  missed.verdict.pass = true;
+  missed.verdict.set_target("ratio ≤ 1", false);
+  met.claim = "F2.4-exact-vs-float", met.title = "t";
+  met.verdict.pass = true;
+  met.verdict.set_target("ratio ≤ 9", true);
+  failed.claim = "T3.3.8", failed.title = "f";
+  failed.verdict.pass = false;
+  failed.verdict.set_target("ratio ≤ 1", false);
+  std::ostringstream table;
+  print_table({missed, met, failed}, table);
+  std::string t = table.str();
+  EXPECT_NE(t.find("I2-root-solver-speed        MISSED"), std::string::npos) << t;
+  EXPECT_NE(t.find("F2.4-exact-vs-float         PASS"), std::string::npos) << t;
+  EXPECT_NE(t.find("T3.3.8                      FAIL"), std::string::npos) << t;
+  EXPECT_NE(t.find("2 passed, 1 failed (1 of the passed missed a stated target: MISSED)"), std::string::npos) << t;
+  EXPECT_EQ(status({missed, met}), 0);  // a missed target is a measurement, not a wrong answer
+  auto dir = std::filesystem::temp_directory_path() / "kmr_target_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::ostringstream a;
+  write_json({missed, met}, a);
+  std::ofstream(dir / "in.json") << a.str();
+  pt::ptree root;  // read with Boost, not with read_json
+  std::istringstream in(a.str());
+  pt::read_json(in, root);
+  std::vector<std::string> verdicts, met_flags;
+  for (const auto& [k, c] : root) verdicts.push_back(c.get<std::string>("verdict")), met_flags.push_back(c.get<std::string>("target_met"));
+  EXPECT_EQ(verdicts, (std::vector<std::string>{"MISSED", "PASS"}));
+  EXPECT_EQ(met_flags, (std::vector<std::string>{"false", "true"}));
+  auto back = read_json((dir / "in.json").string());
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(std::string(verdict_word(back[0].verdict)), "MISSED");
+  EXPECT_EQ(back[0].verdict.target, "ratio ≤ 1");
+  write_report((dir / "r").string(), back, Options{}, parse_ledger(claims_ledger()));
+  std::string md = slurp(dir / "r" / "report.md");
+  EXPECT_NE(md.find("\n### I2-root-solver-speed — MISSED"), std::string::npos);
+  EXPECT_NE(md.find("- **Target.** ratio ≤ 1 — **missed**"), std::string::npos);
+  EXPECT_NE(md.find("\n### F2.4-exact-vs-float — PASS"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
