@@ -17,6 +17,7 @@
 #include "cli/commands.hpp"
 #include "cli/formats.hpp"
 #include "cli/kmesh_picture.hpp"
+#include "cli/output_file.hpp"
 #include "exact/error.hpp"
 #include "exact/integer.hpp"
 #include "kmesh/certificates.hpp"
@@ -131,11 +132,8 @@ int kmesh_command(const Argv& argv) {
                          std::get<0>(*c).to_decimal() + " (the spread would be infinite)");
     }
 
-  std::ofstream picture;  // opened before the run, so that a bad path fails fast
-  if (auto f = args.value("svg")) {
-    picture.open(*f);
-    if (!picture) throw InputError("cannot write --svg file '" + *f + "'");
-  }
+  OutputFile picture;  // opened before the run (a bad path fails fast), removed if the run fails
+  if (auto f = args.value("svg")) picture.open(*f, "--svg");
   std::vector<InputPoint> in;
   for (auto& p : traj) in.push_back({p.x, p.y, p.vx, p.vy});
   auto t0 = std::chrono::steady_clock::now();
@@ -276,10 +274,9 @@ int kmesh_command(const Argv& argv) {
     st << "]}\n";
   }
   if (picture.is_open()) {
-    picture << kmesh_picture(vertices, m.triangles,
-                             "kmr kmesh " + path.substr(path.find_last_of('/') + 1) + " at time " + until.to_decimal());
-    if (!picture) throw InputError("cannot write --svg file '" + *args.value("svg") + "'");
-    picture.close();
+    picture.stream() << kmesh_picture(vertices, m.triangles,
+                                      "kmr kmesh " + path.substr(path.find_last_of('/') + 1) + " at time " + until.to_decimal());
+    picture.commit();
   }
   std::cout << out.str();
   return status;
