@@ -1,5 +1,7 @@
 #include "cli/formats.hpp"
 
+#include "exact/text_lines.hpp"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -105,21 +107,10 @@ template std::vector<WsUpdate<2>> parse_ws_updates<2>(std::istream&, const std::
 template std::vector<WsUpdate<3>> parse_ws_updates<3>(std::istream&, const std::string&, const std::vector<wellspaced::Point<3>>&);
 template std::vector<WsUpdate<4>> parse_ws_updates<4>(std::istream&, const std::string&, const std::vector<wellspaced::Point<4>>&);
 
-// Non-blank lines (after '#' comments are cut) as (line number, whitespace-separated tokens).
+// exact::read_text_lines in the (line number, tokens) shape the format parsers use.
 std::vector<std::pair<std::size_t, std::vector<std::string>>> read_lines(std::istream& in) {
   std::vector<std::pair<std::size_t, std::vector<std::string>>> out;
-  std::string line;
-  std::size_t n = 0;
-  while (std::getline(in, line)) {
-    ++n;
-    auto h = line.find('#');
-    if (h != std::string::npos) line.resize(h);
-    std::istringstream ss(line);
-    std::vector<std::string> toks;
-    std::string t;
-    while (ss >> t) toks.push_back(t);
-    if (!toks.empty()) out.emplace_back(n, std::move(toks));
-  }
+  for (exact::TextLine& l : exact::read_text_lines(in)) out.emplace_back(l.number, std::move(l.tokens));
   return out;
 }
 

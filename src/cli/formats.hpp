@@ -16,8 +16,8 @@
 
 namespace kmr::cli {
 
-// The one tokenizer of the line formats: the non-blank lines of `in` (after '#' comments are cut)
-// as (line number, whitespace-separated tokens).
+// The line formats' tokenizer (exact/text_lines.hpp): the non-blank lines of `in` (after '#'
+// comments are cut) as (line number, whitespace-separated tokens).
 std::vector<std::pair<std::size_t, std::vector<std::string>>> read_lines(std::istream& in);
 
 // `kmr roots [--lattice-bits B] [--from T0] [--to T1] -- c0 ... cn`, all but the zero-polynomial check.

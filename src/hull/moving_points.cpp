@@ -5,33 +5,27 @@
 #include <sstream>
 
 #include "exact/error.hpp"
+#include "exact/text_lines.hpp"
 #include "geometry/predicates.hpp"
 
 namespace kmr::hull {
 
 std::vector<MovingPoint> parse_hull_motions(std::istream& in, const std::string& filename) {
   std::vector<MovingPoint> points;
-  std::string line;
-  for (long long number = 1; std::getline(in, line); ++number) {
-    auto where = [&] { return filename + ":" + std::to_string(number) + ": "; };
-    if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
-    std::istringstream fields(line);
-    std::vector<std::string> words;
-    for (std::string w; fields >> w;) words.push_back(w);
-    if (words.empty()) continue;
-    if (words.size() != 6)
-      throw InputError(where() + "expected 6 integers 'x y z vx vy vz', found " + std::to_string(words.size()) +
-                       " fields: '" + line + "'");
+  for (const exact::TextLine& l : exact::read_text_lines(in, filename)) {
+    auto where = [&] { return filename + ":" + std::to_string(l.number) + ": "; };
+    if (l.tokens.size() != 6)
+      throw InputError(where() + "expected 6 integers 'x y z vx vy vz', found " + std::to_string(l.tokens.size()) +
+                       " fields: '" + l.text() + "'");
     MovingPoint p;
     try {
       for (int k = 0; k < 3; ++k)
-        p[k] = Polynomial(std::vector<exact::Integer>{exact::parse_integer(words[k]), exact::parse_integer(words[k + 3])});
+        p[k] = Polynomial(std::vector<exact::Integer>{exact::parse_integer(l.tokens[k]), exact::parse_integer(l.tokens[k + 3])});
     } catch (const InputError& e) {
       throw InputError(where() + e.what());
     }
     points.push_back(std::move(p));
   }
-  if (in.bad()) throw InputError(filename + ": read error");
   if (points.empty()) throw InputError(filename + ": no points");
   return points;
 }

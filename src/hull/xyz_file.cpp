@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "exact/error.hpp"
+#include "exact/text_lines.hpp"
 
 namespace kmr::hull {
 namespace {
@@ -36,26 +37,20 @@ bool is_decimal(const std::string& w) {
 
 std::vector<geometry::Point3d> read_xyz(std::istream& in, const std::string& filename) {
   std::vector<geometry::Point3d> points;
-  std::string line;
-  for (long long number = 1; std::getline(in, line); ++number) {
-    auto where = [&] { return filename + ":" + std::to_string(number) + ": "; };
-    if (auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
-    std::istringstream fields(line);
-    std::vector<std::string> words;
-    for (std::string w; fields >> w;) words.push_back(w);
-    if (words.empty()) continue;
-    if (words.size() != 3)
-      throw InputError(where() + "expected 3 numbers 'x y z', found " + std::to_string(words.size()) +
-                       " fields: '" + line + "'");
+  for (const exact::TextLine& l : exact::read_text_lines(in, filename)) {
+    auto where = [&] { return filename + ":" + std::to_string(l.number) + ": "; };
+    if (l.tokens.size() != 3)
+      throw InputError(where() + "expected 3 numbers 'x y z', found " + std::to_string(l.tokens.size()) +
+                       " fields: '" + l.text() + "'");
     geometry::Point3d p;
     for (int k = 0; k < 3; ++k) {
-      if (!is_decimal(words[k])) throw InputError(where() + "not a decimal number: '" + words[k] + "'");
-      p[k] = std::strtod(words[k].c_str(), nullptr);  // correctly rounded (glibc)
-      if (!std::isfinite(p[k])) throw InputError(where() + "not a finite double: '" + words[k] + "'");
+      const std::string& w = l.tokens[k];
+      if (!is_decimal(w)) throw InputError(where() + "not a decimal number: '" + w + "'");
+      p[k] = std::strtod(w.c_str(), nullptr);  // correctly rounded (glibc)
+      if (!std::isfinite(p[k])) throw InputError(where() + "not a finite double: '" + w + "'");
     }
     points.push_back(p);
   }
-  if (in.bad()) throw InputError(filename + ": read error");
   return points;
 }
 
