@@ -35,6 +35,11 @@ Polynomial orientation_polynomial(const MovingPoint& p, const MovingPoint& q, co
   return geometry::orientation_value<Polynomial>(p, q, r, s);
 }
 
+Polynomial side_of_sphere_polynomial(const MovingPoint& p, const MovingPoint& q, const MovingPoint& r,
+                                     const MovingPoint& s, const MovingPoint& t) {
+  return geometry::side_of_oriented_sphere_value<Polynomial>(p, q, r, s, t);
+}
+
 namespace {
 MovingPoint times4(const MovingPoint& p) {
   MovingPoint r;

@@ -34,6 +34,11 @@ std::vector<MovingPoint> parse_hull_motions(std::istream& in, const std::string&
 
 Polynomial orientation_polynomial(const MovingPoint& p, const MovingPoint& q, const MovingPoint& r,
                                   const MovingPoint& s);
+// side_of_oriented_sphere_value over Polynomial (CGAL's sign: > 0 iff t lies inside the sphere
+// through p, q, r, s when orientation(p, q, r, s) > 0), degree ≤ 5 for linear motion; alternating in
+// its five arguments. Fig. 2.3's kinetic Delaunay baseline (bench/hull) certifies with it.
+Polynomial side_of_sphere_polynomial(const MovingPoint& p, const MovingPoint& q, const MovingPoint& r,
+                                     const MovingPoint& s, const MovingPoint& t);
 Polynomial centre_side_polynomial(const MovingPoint& u, const MovingPoint& v, const MovingPoint& x,
                                   const MovingPoint& centre_sum);
 MovingPoint trajectory_sum(const MovingPoint& a, const MovingPoint& b, const MovingPoint& c, const MovingPoint& d);
