@@ -85,6 +85,26 @@ TEST(KineticDelaunay, F2_3_PointEntersHull) {
   EXPECT_EQ(kd.hull_vertices(), (std::vector<int>{0, 1, 2, 3}));
 }
 
+// The same tetrahedron, e(t) = (1, 1, 1 − t) leaving it through the hull face abc: at t = 1 the cell
+// abce flattens (its hull-face certificate fails; e joins the hull, star of 4 cells → 3 cells around
+// de, e inside the sphere of abcd); at t = 1 + √30 − 3 ≈ 2.48 e leaves that sphere (z = 4 − √30) and
+// the three inner facets ade, bde, cde fail together: 3 → 2 cells.
+TEST(KineticDelaunay, F2_3_PointLeavesThroughHullFace) {
+  RecordProperty("claim", "F2.3-events-vs-kinetic-delaunay");
+  std::vector<MovingPoint> pts{moving(0, 0, 0), moving(8, 0, 0), moving(0, 8, 0), moving(0, 0, 8), moving(1, 1, 1, 0, 0, -1)};
+  kmr::kinetic::MotionSimulator sim(4, Dyadic(5));
+  KineticDelaunay kd(pts, sim);
+  EXPECT_EQ(kd.cells().size(), 4u);
+  EXPECT_EQ(kd.hull_vertices(), (std::vector<int>{0, 1, 2, 3}));
+  SimulationRun r = simulate(kd, sim, Dyadic(5));
+  EXPECT_TRUE(r.gap_failures.empty()) << r.gap_failures.front();
+  EXPECT_EQ(r.batches, 2);
+  EXPECT_EQ(r.events, 4);
+  EXPECT_EQ(r.flips, 2);
+  EXPECT_EQ(kd.cells().size(), 2u);
+  EXPECT_EQ(kd.hull_vertices(), (std::vector<int>{0, 1, 2, 3, 4}));
+}
+
 // Random §2.4-style motions (small, so many events happen early): every gap between batches is
 // checked against CGAL; the Delaunay hull vertices equal the kinetic hull's after every batch.
 TEST(KineticDelaunay, F2_3_RandomMotionsMatchCgalBetweenBatches) {
