@@ -44,8 +44,8 @@ namespace kmr::bench {
 
 struct KineticDelaunayCounters {
   long long events = 0, flips = 0, batches = 0;
-  long long rebuilds = 0;   // CGAL triangulations built for update (retries included)
-  long long retries = 0;    // rebuilds at a later j because a certificate did not hold just before now
+  long long rebuilds = 0;   // CGAL triangulations built (retries included)
+  long long retries = 0;    // rebuilds at j > 1 (a time nearer now: a certificate did not hold at the earlier one)
   long long certificates_created = 0;
   long long max_certificates = 0;
 };
@@ -92,6 +92,7 @@ class KineticDelaunay {
   std::vector<int> hull_vertices_;
   std::map<Key, kinetic::CertificateId> ids_;
   std::map<kinetic::CertificateId, Key> keys_;
+  std::vector<kinetic::CertificateId> last_batch_;  // during update's rebuild
   KineticDelaunayCounters counters_;
 };
 
