@@ -11,6 +11,7 @@
 // Guarantees: returns the alive face of the current hull hit by the ray cx if x lies strictly
 // beyond its plane (x is outside conv(A_i)); otherwise −1 (x is inside or on conv(A_i): discarded),
 // and when x equals a surface vertex of the located face, records it in duplicate_of.
+#include <algorithm>
 #include <cstdint>
 
 #include "exact/error.hpp"
@@ -41,14 +42,42 @@ int search_tent(const HullState& h, int q, int x, Kernel& k) {
   throw ContractError("hull: no tent face of point " + std::to_string(q) + " contains the ray to " + std::to_string(x));
 }
 
+// The root pyramids' sides are the six planes (c, u, v) through the centre and an edge uv of the
+// initial tetrahedron, each shared by the two faces on that edge with opposite orientation. An exact
+// kernel's centre_side is antisymmetric (orientation(v, u, c, x) = −orientation(u, v, c, x)), so
+// each plane is tested at most once per point: the same answers as in_pyramid face by face, with at
+// most 6 tests instead of up to 12. Only kernels that declare `exact = true` (ExactKernel); the
+// others (FloatKernel rounds; hull_at_time's names the points of a refused test) keep in_pyramid.
+template <class Kernel>
+constexpr bool antisymmetric_centre_side = requires { requires Kernel::exact; };
+
+template <class Kernel>
+int root_face_of(const HullState& h, int x, Kernel& k) {
+  if constexpr (!antisymmetric_centre_side<Kernel>) {
+    for (int r : h.root_faces)
+      if (in_pyramid(h.faces[r], x, k)) return r;
+    return -1;
+  } else {
+    int lo[6], hi[6], sign[6], used = 0;
+    auto side = [&](int u, int v) {  // centre_side(u, v, x), each plane once
+      const int a = std::min(u, v), b = std::max(u, v);
+      for (int i = 0; i < used; ++i)
+        if (lo[i] == a && hi[i] == b) return u == a ? sign[i] : -sign[i];
+      const int s = k.centre_side(a, b, x);
+      lo[used] = a, hi[used] = b, sign[used++] = s;
+      return u == a ? s : -s;
+    };
+    for (int r : h.root_faces) {
+      const Face& f = h.faces[r];
+      if (side(f.v[0], f.v[1]) >= 0 && side(f.v[1], f.v[2]) >= 0 && side(f.v[2], f.v[0]) >= 0) return r;
+    }
+    return -1;
+  }
+}
+
 template <class Kernel>
 int find_associated_face(HullState& h, int x, Kernel& k, LocationCounts& counts) {
-  int f = -1;
-  for (int r : h.root_faces)
-    if (in_pyramid(h.faces[r], x, k)) {
-      f = r;
-      break;
-    }
+  int f = root_face_of(h, x, k);
   KMR_CHECK(f >= 0, "hull: the initial pyramids do not cover point " + std::to_string(x));
   for (;;) {  // findFace
     ++counts.history_steps;
