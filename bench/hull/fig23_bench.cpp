@@ -108,6 +108,7 @@ void run_one(Row& row, int n, std::uint64_t seed, long long check_every, const D
 void write_audit_json(const std::string& path, const std::vector<Row>& rows, const std::string& replay) {
   namespace au = kmr::audit;
   au::Result r;
+  for (const Row& w : rows) r.seconds += w.hull_seconds + w.dt_seconds;
   r.claim = "F2.3-events-vs-kinetic-delaunay";
   r.title = "events: kinetic hull vs kinetic 3D Delaunay on the same motions (bench/hull/fig23_bench)";
   r.replay = replay;

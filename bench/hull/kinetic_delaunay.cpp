@@ -173,6 +173,7 @@ Polynomial KineticDelaunay::certificate_polynomial(const Key& k) const {
 
 void KineticDelaunay::rebuild() {
   const Dyadic now = sim_.now();
+  bool any_complete = false;
   for (int j = 1; j <= 200; ++j) {
     const Dyadic t = now - Dyadic::pow2(-sim_.lattice_bits() - j);
     // A cheap necessary condition first: t lies after the last root in the interval of every
@@ -188,6 +189,7 @@ void KineticDelaunay::rebuild() {
     if (j > 1) ++counters_.retries;
     Snapshot snap = snapshot_at(points_, t);
     if (!snap.complete) continue;
+    any_complete = true;
     // Every certificate must hold just before now; new ones are evaluated, kept ones asked.
     std::map<Key, Polynomial> fresh;
     bool holds = true;
@@ -229,6 +231,9 @@ void KineticDelaunay::rebuild() {
     hull_vertices_ = std::move(snap.hull_vertices);
     return;
   }
+  if (!any_complete)
+    throw InputError("kinetic Delaunay: just before " + now.to_decimal() +
+                     " the points are coplanar or two of them coincide (no 3D triangulation of all of them)");
   throw ContractError("kinetic Delaunay: no dyadic time just before " + now.to_decimal() +
                       " gives a triangulation whose certificates all hold");
 }

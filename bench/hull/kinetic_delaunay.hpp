@@ -19,7 +19,8 @@
 //    the convention of the kinetic hull): CGAL (exact filtered predicates on the exact integer
 //    positions) rebuilds it at t = now − δ·2^−j for the smallest j ≥ 1 at which every certificate of
 //    the rebuilt triangulation holds just before now — which proves it is that triangulation (all
-//    facets locally Delaunay, hull locally convex, no hull face crossed). ContractError otherwise.
+//    facets locally Delaunay, hull locally convex, no hull face crossed). InputError when the
+//    points are coplanar or two coincide at every tried time; ContractError otherwise.
 //  * events = certificate failures (the simulator's count); flips = per batch, the number of
 //    distinct point sets among the failed certificates (the facets of one cospherical 5-set, or the
 //    hull edges of one coplanar 4-set, fail together and a flip-based KDS processes one event).

@@ -136,4 +136,10 @@ TEST(KineticDelaunay, RefusesIdenticallyCosphericalPoints) {
   EXPECT_THROW(KineticDelaunay(pts, sim), kmr::InputError);
 }
 
+TEST(KineticDelaunay, RefusesPointsCoplanarForAllTime) {
+  std::vector<MovingPoint> pts{moving(0, 0, 0, 1, 0, 0), moving(4, 0, 0), moving(0, 4, 0, 0, 1, 0), moving(3, 3, 0), moving(1, 2, 0, 2, 1, 0)};
+  kmr::kinetic::MotionSimulator sim(3, Dyadic(8));
+  EXPECT_THROW(KineticDelaunay(pts, sim), kmr::InputError);
+}
+
 }  // namespace
