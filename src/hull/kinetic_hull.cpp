@@ -23,6 +23,7 @@
 #include <algorithm>
 
 #include "exact/error.hpp"
+#include "poly/failure_filter.hpp"
 #include "hull/priorities.hpp"
 
 namespace kmr::hull {
@@ -274,10 +275,29 @@ void KineticHull::start() {
   refuse_identical_trajectories(pts_);
   simplex_ = initial_simplex_of(pts_, live_order);
   centre_sum_ = trajectory_sum(pts_[simplex_[0]], pts_[simplex_[1]], pts_[simplex_[2]], pts_[simplex_[3]]);
+  refresh_machine_points();
   if (present_box_.empty())
     for (std::size_t x = 0; x < pts_.size(); ++x)
       present_box_.push_back(rt_.input<bool>(sac::Label("hull.present"), x, present_[x]));
   run();
+}
+
+void KineticHull::refresh_machine_points() {
+  machine_.clear();
+  for (const MovingPoint& p : pts_) machine_.push_back(machine_point(p));
+  machine_centre_.reset();
+  bool all = true;
+  for (int v : simplex_) all = all && machine_[v].has_value();
+  if (all) {
+    MachinePoint s;
+    for (int k = 0; k < 3; ++k)
+      s[k] = (*machine_[simplex_[0]])[k] + (*machine_[simplex_[1]])[k] + (*machine_[simplex_[2]])[k] + (*machine_[simplex_[3]])[k];
+    machine_centre_ = s;
+  }
+  t_lattice_.reset();
+  const exact::Integer& m = t_.mantissa();
+  if (t_.exponent() <= 0 && t_.exponent() >= -62 && exact::bit_length(m) <= 52)
+    t_lattice_ = std::pair(static_cast<std::int64_t>(m), static_cast<int>(-t_.exponent()));
 }
 
 KineticHull::~KineticHull() {
@@ -347,6 +367,7 @@ void KineticHull::change_motion(int x, MovingPoint r) {
   auto restore = [&] {
     pts_[x] = old;
     centre_sum_ = old_sum;
+    refresh_machine_points();
   };
   std::vector<int> live_order;
   for (int y : order_)
@@ -367,6 +388,7 @@ void KineticHull::change_motion(int x, MovingPoint r) {
   }
   const bool centre = std::count(before.begin(), before.end(), x) > 0;
   if (centre) centre_sum_ = trajectory_sum(pts_[before[0]], pts_[before[1]], pts_[before[2]], pts_[before[3]]);
+  refresh_machine_points();
   std::vector<CertificateKey> affected;
   if (centre)
     for (const auto& [key, reg] : certs_)
@@ -375,7 +397,7 @@ void KineticHull::change_motion(int x, MovingPoint r) {
     affected.insert(affected.end(), it->second.begin(), it->second.end());
   std::sort(affected.begin(), affected.end());
   affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
-  std::vector<Polynomial> polys;  // all computed first: a refused change changes nothing
+  std::vector<CertificatePolynomial> polys;  // all computed first: a refused change changes nothing
   for (const CertificateKey& key : affected) {
     const Test test = static_cast<Test>(key[0]);
     polys.push_back(polynomial(test, key[1], key[2], key[3], key[4]));
@@ -391,12 +413,12 @@ void KineticHull::change_motion(int x, MovingPoint r) {
     if (sim_) {
       sim_->remove(reg.sim);
       by_sim_.erase(reg.sim);
-      reg.sim = sim_->add(polys[i]);
+      reg.sim = polys[i].machine ? sim_->add(*polys[i].machine) : sim_->add(polys[i].exact);
       by_sim_.emplace(reg.sim, affected[i]);
       ++counters_.certificates_created;
       outcome = sim_->outcome(reg.sim);
     } else {
-      outcome = poly::sign_before(polys[i], t_);
+      outcome = sign_before_t(polys[i]);
     }
     rt_.change(reg.cert, outcome);
   }
@@ -431,12 +453,28 @@ void KineticHull::set_present(int x, bool on) {
 void KineticHull::remove_point(int x) { set_present(x, false); }
 void KineticHull::insert_point(int x) { set_present(x, true); }
 
-Polynomial KineticHull::polynomial(Test test, int a, int b, int c, int d) const {
+KineticHull::CertificatePolynomial KineticHull::polynomial(Test test, int a, int b, int c, int d) const {
+  CertificatePolynomial r;
+  const auto& M = machine_;
   switch (test) {
-    case Test::initial: return orientation_polynomial(pts_[a], pts_[b], pts_[c], pts_[d]);
-    case Test::visible: return orientation_polynomial(pts_[b], pts_[c], pts_[d], pts_[a]);  // face bcd, point a
-    default: return centre_side_polynomial(pts_[b], pts_[c], pts_[a], centre_sum_);       // point a, side (b, c, centre)
+    case Test::initial:
+      if (M[a] && M[b] && M[c] && M[d]) r.machine = orientation_polynomial(*M[a], *M[b], *M[c], *M[d]);
+      else r.exact = orientation_polynomial(pts_[a], pts_[b], pts_[c], pts_[d]);
+      break;
+    case Test::visible:  // face bcd, point a
+      if (M[a] && M[b] && M[c] && M[d]) r.machine = orientation_polynomial(*M[b], *M[c], *M[d], *M[a]);
+      else r.exact = orientation_polynomial(pts_[b], pts_[c], pts_[d], pts_[a]);
+      break;
+    default:  // point a, side (b, c, centre)
+      if (M[a] && M[b] && M[c] && machine_centre_) r.machine = centre_side_polynomial(*M[b], *M[c], *M[a], *machine_centre_);
+      else r.exact = centre_side_polynomial(pts_[b], pts_[c], pts_[a], centre_sum_);
   }
+  return r;
+}
+
+int KineticHull::sign_before_t(const CertificatePolynomial& p) const {
+  if (p.machine && t_lattice_) return poly::sign_before_lattice(*p.machine, t_lattice_->first, t_lattice_->second);
+  return poly::sign_before(p.machine ? p.machine->to_polynomial() : p.exact, t_);
 }
 
 std::string KineticHull::describe(Test test, int a, int b, int c, int d) const {
@@ -459,14 +497,14 @@ sac::Mod<int>* KineticHull::certificate(Test test, int a, int b, int c, int d) {
   if (it != certs_.end()) {
     initial = it->second.cert->value;  // the same polynomial's current outcome
   } else {
-    Polynomial P = polynomial(test, a, b, c, d);
+    CertificatePolynomial P = polynomial(test, a, b, c, d);
     if (P.is_zero()) throw InputError(describe(test, a, b, c, d));
     if (sim_) {
-      sid = sim_->add(P);
+      sid = P.machine ? sim_->add(*P.machine) : sim_->add(P.exact);
       initial = sim_->outcome(sid);
       ++counters_.certificates_created;
     } else {
-      initial = poly::sign_before(P, t_);
+      initial = sign_before_t(P);
     }
   }
   sac::Mod<int>* m = rt_.traceable<int>(label_of(test), initial, a, b, c, d);

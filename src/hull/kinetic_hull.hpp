@@ -124,7 +124,16 @@ class KineticHull {
   void propagate();
   void set_present(int x, bool on);
   void index_certificate(const CertificateKey& key, bool add);
-  Polynomial polynomial(Test test, int a, int b, int c, int d) const;
+  // A certificate's polynomial: in machine form when its points have one (moving_points.hpp), else
+  // as a Polynomial; the two are the same polynomial.
+  struct CertificatePolynomial {
+    std::optional<poly::MachinePolynomial> machine;
+    Polynomial exact;  // when !machine
+    bool is_zero() const { return machine ? machine->is_zero() : exact.is_zero(); }
+  };
+  CertificatePolynomial polynomial(Test test, int a, int b, int c, int d) const;
+  int sign_before_t(const CertificatePolynomial& p) const;  // outcome in a from-scratch reference run
+  void refresh_machine_points();
   std::string describe(Test test, int a, int b, int c, int d) const;
 
   struct Registration {
@@ -141,6 +150,9 @@ class KineticHull {
   std::map<int, std::vector<CertificateKey>> by_point_;              // point → its live certificates
   std::array<int, 4> simplex_{};
   MovingPoint centre_sum_;
+  std::vector<std::optional<MachinePoint>> machine_;  // machine forms of pts_ (issue 9)
+  std::optional<MachinePoint> machine_centre_;        // of centre_sum_, when all four have one
+  std::optional<std::pair<std::int64_t, int>> t_lattice_;  // t_ = k·2^-b with |k| < 2^53, 0 ≤ b ≤ 62
   sac::Runtime rt_;
   std::map<CertificateKey, Registration> certs_;                       // live certificates
   std::unordered_map<kinetic::CertificateId, CertificateKey> by_sim_;  // simulator id → key (lookup only)

@@ -49,6 +49,46 @@ Polynomial centre_side_polynomial(const MovingPoint& u, const MovingPoint& v, co
   return geometry::orientation_value<Polynomial>(times4(u), times4(v), centre_sum, times4(x));
 }
 
+std::optional<MachinePoint> machine_point(const MovingPoint& p) {
+  MachinePoint m;
+  for (int k = 0; k < 3; ++k) {
+    const auto& cs = p[k].coefficients();
+    if (cs.size() > 2) return std::nullopt;
+    __int128 c[2] = {0, 0};
+    for (std::size_t j = 0; j < cs.size(); ++j) {
+      if (exact::bit_length(cs[j]) > 36) return std::nullopt;  // |c| < 2^36
+      c[j] = static_cast<long long>(cs[j]);
+    }
+    m[k] = poly::MachinePolynomial::linear(c[0], c[1]);
+  }
+  return m;
+}
+
+poly::MachinePolynomial orientation_polynomial(const MachinePoint& p, const MachinePoint& q, const MachinePoint& r,
+                                               const MachinePoint& s) {
+  return geometry::orientation_value<poly::MachinePolynomial>(p, q, r, s);
+}
+
+namespace {
+MachinePoint times4(const MachinePoint& p) {
+  MachinePoint r;
+  for (int k = 0; k < 3; ++k) r[k] = poly::MachinePolynomial(4) * p[k];
+  return r;
+}
+}  // namespace
+
+poly::MachinePolynomial centre_side_polynomial(const MachinePoint& u, const MachinePoint& v, const MachinePoint& x,
+                                               const MachinePoint& centre_sum) {
+  return geometry::orientation_value<poly::MachinePolynomial>(times4(u), times4(v), centre_sum, times4(x));
+}
+
+MovingPoint linear(long long x, long long y, long long z, long long vx, long long vy, long long vz) {
+  MovingPoint p;
+  const long long pos[3] = {x, y, z}, vel[3] = {vx, vy, vz};
+  for (int k = 0; k < 3; ++k) p[k] = Polynomial(std::vector<exact::Integer>{exact::Integer(pos[k]), exact::Integer(vel[k])});
+  return p;
+}
+
 MovingPoint trajectory_sum(const MovingPoint& a, const MovingPoint& b, const MovingPoint& c, const MovingPoint& d) {
   MovingPoint s;
   for (int k = 0; k < 3; ++k) s[k] = a[k] + b[k] + c[k] + d[k];

@@ -47,13 +47,34 @@ Iv horner(const Coefficients& c, int n, Iv x) {
   return y;
 }
 
+// The double sign of p(kδ) with filtered_sign_at's rigorous bound (polynomial.cpp); 0: undecided.
+int double_sign_at(const double* c, int n, std::int64_t k, double inv_scale) {
+  if (!(k > -(std::int64_t{1} << 53) && k < (std::int64_t{1} << 53))) return 0;
+  double x = double(k) * inv_scale;  // exact
+  double ax = std::fabs(x);
+  double y = c[n], bound = std::fabs(c[n]);
+  for (int i = n - 1; i >= 0; --i) {
+    y = y * x + c[i];
+    bound = bound * ax + std::fabs(c[i]);
+  }
+  double err = (2.0 * n + 2.0) * std::ldexp(bound, -51);  // as in filtered_sign_at (polynomial.cpp)
+  if (std::isfinite(y) && std::isfinite(bound) && bound >= std::ldexp(1.0, -900)) {
+    if (y > err) return 1;
+    if (y < -err) return -1;
+  }
+  return 0;
+}
+
+// The filter over rounded coefficients c[0..n] (each within one ulp of the exact one); ExactSign(k)
+// is the exact sign of p(kδ), asked only when the double evaluation cannot decide it.
+template <class ExactSign>
 class Filter {
  public:
-  Filter(const Polynomial& p, const DoubleCoefficients& approx, int bits)
-      : p_(p), approx_(approx), bits_(bits), n_(p.degree()), inv_scale_(std::ldexp(1.0, -bits)) {
-    if (!approx.usable || n_ > kMaxDegree) return;
+  Filter(const double* c, int n, bool usable, int bits, ExactSign exact)
+      : c_(c), usable_(usable), exact_(exact), n_(n), inv_scale_(std::ldexp(1.0, -bits)) {
+    if (!usable_ || n_ > kMaxDegree) return;
     for (int i = 0; i <= n_; ++i)  // mpz_get_d truncates: < 1 ulp, inside the widening
-      coeff_[static_cast<std::size_t>(i)] = widened(approx.c[static_cast<std::size_t>(i)], approx.c[static_cast<std::size_t>(i)]);
+      coeff_[static_cast<std::size_t>(i)] = widened(c[i], c[i]);
     for (int i = 1; i <= n_; ++i)
       deriv_[static_cast<std::size_t>(i - 1)] = mul(Iv{double(i), double(i)}, coeff_[static_cast<std::size_t>(i)]);
     if (n_ == 0) deriv_[0] = {0, 0};
@@ -61,7 +82,7 @@ class Filter {
 
   FailureFilterResult run(std::int64_t a, std::int64_t b) {
     FailureFilterResult r;
-    if (!approx_.usable || n_ > kMaxDegree) return r;
+    if (!usable_ || n_ > kMaxDegree) return r;
     if (a >= b) {
       r.decided = true;
       return r;
@@ -107,27 +128,14 @@ class Filter {
   }
   // The exact sign of p(kδ): a double evaluation with filtered_sign_at's bound, else exact.
   int sign_at(std::int64_t k) const {
-    int n = p_.degree();
-    if (k > -(std::int64_t{1} << 53) && k < (std::int64_t{1} << 53)) {
-      double x = double(k) * inv_scale_;  // exact
-      double ax = std::fabs(x);
-      double y = approx_.c.back(), bound = std::fabs(approx_.c.back());
-      for (int i = n - 1; i >= 0; --i) {
-        y = y * x + approx_.c[static_cast<std::size_t>(i)];
-        bound = bound * ax + std::fabs(approx_.c[static_cast<std::size_t>(i)]);
-      }
-      double err = (2.0 * n + 2.0) * std::ldexp(bound, -51);  // as in filtered_sign_at (polynomial.cpp)
-      if (std::isfinite(y) && std::isfinite(bound) && bound >= std::ldexp(1.0, -900)) {
-        if (y > err) return 1;
-        if (y < -err) return -1;
-      }
-    }
-    return p_.sign_at(Integer(k), bits_);
+    if (int s = double_sign_at(c_, n_, k, inv_scale_); s != 0) return s;
+    return exact_(k);
   }
 
-  const Polynomial& p_;
-  const DoubleCoefficients& approx_;
-  int bits_, n_;
+  const double* c_;
+  bool usable_;
+  ExactSign exact_;
+  int n_;
   double inv_scale_;  // 2^−bits
   Coefficients coeff_{}, deriv_{};
 };
@@ -142,7 +150,31 @@ FailureFilterResult filtered_next_failure(const Polynomial& p, const DoubleCoeff
   constexpr std::int64_t kLimit = std::int64_t{1} << 62;
   KMR_CHECK(a > -kLimit && a < kLimit && b > -kLimit && b < kLimit, "filtered_next_failure: lattice indices beyond 2^62");
   KMR_CHECK(!approx.usable || approx.c.size() == p.coefficients().size(), "filtered_next_failure: approx is not from p");
-  return Filter(p, approx, bits).run(a, b);
+  auto exact = [&p, bits](std::int64_t k) { return p.sign_at(Integer(k), bits); };
+  return Filter<decltype(exact)>(approx.c.data(), p.degree(), approx.usable, bits, exact).run(a, b);
+}
+
+namespace {
+void check_query(int bits, std::int64_t a, std::int64_t b) {
+  KMR_CHECK(bits >= 0 && bits <= 62, "filtered_next_failure: lattice bits must be in [0, 62]");
+  constexpr std::int64_t kLimit = std::int64_t{1} << 62;
+  KMR_CHECK(a > -kLimit && a < kLimit && b > -kLimit && b < kLimit, "filtered_next_failure: lattice indices beyond 2^62");
+}
+}  // namespace
+
+FailureFilterResult filtered_next_failure(const MachinePolynomial& p, int bits, std::int64_t a, std::int64_t b) {
+  KMR_CHECK(!p.is_zero(), "filtered_next_failure of the zero polynomial");
+  check_query(bits, a, b);
+  const auto approx = p.approximations();  // round to nearest: within the one-ulp allowance
+  auto exact = [&p, bits](std::int64_t k) { return p.to_polynomial().sign_at(Integer(k), bits); };
+  return Filter<decltype(exact)>(approx.data(), p.degree(), true, bits, exact).run(a, b);
+}
+
+int sign_before_lattice(const MachinePolynomial& p, std::int64_t k, int bits) {
+  KMR_CHECK(!p.is_zero(), "sign_before of the zero polynomial");
+  const auto approx = p.approximations();
+  if (int s = double_sign_at(approx.data(), p.degree(), k, std::ldexp(1.0, -bits)); s != 0) return s;
+  return sign_before(p.to_polynomial(), Dyadic(Integer(k), -bits));
 }
 
 }  // namespace kmr::poly
