@@ -328,9 +328,8 @@ void KineticHull::run() {
 void KineticHull::update(const std::vector<kinetic::CertificateId>& batch) {
   KMR_CHECK(sim_ != nullptr, "KineticHull::update on a from-scratch reference");
   for (kinetic::CertificateId id : batch) {
-    auto k = by_sim_.find(id);
-    KMR_CHECK(k != by_sim_.end(), "kinetic hull: a batch names a certificate the hull does not own");
-    rt_.change(certs_.at(k->second).cert, sim_->outcome(id));
+    KMR_CHECK(id < by_sim_.size() && by_sim_[id], "kinetic hull: a batch names a certificate the hull does not own");
+    rt_.change(by_sim_[id]->cert, sim_->outcome(id));
   }
   propagate();
 }
@@ -342,12 +341,28 @@ void KineticHull::propagate() {
 }
 
 void KineticHull::index_certificate(const CertificateKey& key, bool add) {
+  if (by_point_.size() < pts_.size()) by_point_.resize(pts_.size()), by_point_live_.resize(pts_.size());
   for (int i = 1; i < 5; ++i) {
     if (key[i] < 0) continue;
-    auto& v = by_point_[key[i]];
-    if (add) v.push_back(key);
-    else v.erase(std::find(v.begin(), v.end(), key));
+    const auto x = static_cast<std::size_t>(key[i]);
+    auto& v = by_point_[x];
+    if (!add) {
+      --by_point_live_[x];
+      continue;
+    }
+    ++by_point_live_[x];
+    v.push_back(key);
+    if (v.size() > 2 * static_cast<std::size_t>(by_point_live_[x]) + 16) {  // compact: live keys, once each
+      std::sort(v.begin(), v.end());
+      v.erase(std::unique(v.begin(), v.end()), v.end());
+      std::erase_if(v, [this](const CertificateKey& k) { return !certs_.count(k); });
+    }
   }
+}
+
+void KineticHull::register_sim(kinetic::CertificateId id, Registration* reg) {
+  if (by_sim_.size() <= id) by_sim_.resize(id + 1, nullptr);
+  by_sim_[id] = reg;
 }
 
 // §2.4's motion change: every live certificate whose polynomial involves x (all centre tests and
@@ -393,8 +408,9 @@ void KineticHull::change_motion(int x, MovingPoint r) {
   if (centre)
     for (const auto& [key, reg] : certs_)
       if (key[0] != static_cast<int>(Test::visible)) affected.push_back(key);
-  if (auto it = by_point_.find(x); it != by_point_.end())
-    affected.insert(affected.end(), it->second.begin(), it->second.end());
+  if (static_cast<std::size_t>(x) < by_point_.size())
+    for (const CertificateKey& key : by_point_[x])
+      if (certs_.count(key)) affected.push_back(key);
   std::sort(affected.begin(), affected.end());
   affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
   std::vector<CertificatePolynomial> polys;  // all computed first: a refused change changes nothing
@@ -412,9 +428,9 @@ void KineticHull::change_motion(int x, MovingPoint r) {
     int outcome;
     if (sim_) {
       sim_->remove(reg.sim);
-      by_sim_.erase(reg.sim);
+      by_sim_[reg.sim] = nullptr;
       reg.sim = polys[i].machine ? sim_->add(*polys[i].machine) : sim_->add(polys[i].exact);
-      by_sim_.emplace(reg.sim, affected[i]);
+      register_sim(reg.sim, &reg);
       ++counters_.certificates_created;
       outcome = sim_->outcome(reg.sim);
     } else {
@@ -513,9 +529,9 @@ sac::Mod<int>* KineticHull::certificate(Test test, int a, int b, int c, int d) {
     it->second.cert = m;  // reused, or re-created under its key: the simulator keeps its certificate
     it->second.hook = hook;
   } else {
-    certs_.emplace(key, Registration{m, hook, sid});
+    Registration& reg = certs_.emplace(key, Registration{m, hook, sid}).first->second;
     index_certificate(key, true);
-    if (sim_) by_sim_.emplace(sid, key);
+    if (sim_) register_sim(sid, &reg);
   }
   return m;
 }
@@ -525,10 +541,10 @@ void KineticHull::certificate_discarded(const CertificateKey& key, sac::HookId s
   if (it == certs_.end() || it->second.hook != self) return;  // a successor's registration
   if (sim_) {
     sim_->remove(it->second.sim);
-    by_sim_.erase(it->second.sim);
+    by_sim_[it->second.sim] = nullptr;
   }
-  index_certificate(key, false);
   certs_.erase(it);
+  index_certificate(key, false);
 }
 
 void KineticHull::face_created(FaceH f, sac::HookId hook) { faces_[rt_.deref(f).v] = {f, hook}; }
@@ -563,6 +579,7 @@ std::vector<int> KineticHull::vertices() const {
 std::vector<KineticHull::CertificateKey> KineticHull::certificate_keys() const {
   std::vector<CertificateKey> k;
   for (const auto& [key, reg] : certs_) k.push_back(key);
+  std::sort(k.begin(), k.end());
   return k;
 }
 

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace kmr::poly {
@@ -83,6 +84,13 @@ class Filter {
   FailureFilterResult run(std::int64_t a, std::int64_t b) {
     FailureFilterResult r;
     if (!usable_ || n_ > kMaxDegree) return r;
+    // Every real root r has |r| < R (Fujiwara's bound): intervals k with |k|·δ > R hold none, so the
+    // query shrinks to [max(a, −K), min(b, K)) with K = floor(R·2^b) + 1 (issue 9: most cubics'
+    // roots lie far below the horizon, whose empty upper ranges were subdivided one by one).
+    if (std::optional<std::int64_t> K = root_bound_index()) {
+      a = std::max(a, -*K);
+      b = std::min(b, *K);
+    }
     if (a >= b) {
       r.decided = true;
       return r;
@@ -121,6 +129,24 @@ class Filter {
   }
 
  private:
+  // floor(R·2^bits) + 1 for R ≥ 2·max_i |c_{n−i}/c_n|^{1/i} > |every root| (Fujiwara), or nothing
+  // when it does not fit. The coefficients are within one ulp of the exact ones and pow, sqrt and
+  // cbrt within a few ulps, so the factor 1 + 2^−20 covers every rounding.
+  std::optional<std::int64_t> root_bound_index() const {
+    if (n_ < 1 || c_[n_] == 0) return std::nullopt;
+    const double lead = std::fabs(c_[n_]);
+    double m = 0;
+    for (int i = 1; i <= n_; ++i) {
+      double q = std::fabs(c_[n_ - i]) / lead;
+      if (q == 0) continue;
+      double root = i == 1 ? q : i == 2 ? std::sqrt(q) : i == 3 ? std::cbrt(q) : std::pow(q, 1.0 / i);
+      m = std::max(m, root);
+    }
+    double k = std::floor(2 * m * (1 + 0x1p-20) / inv_scale_) + 1;  // ·2^bits, exact scaling
+    if (!(k < 0x1p61)) return std::nullopt;  // also NaN / ∞
+    return static_cast<std::int64_t>(k);
+  }
+
   // sign_before(kδ) where p' has sign d around kδ: sign p(kδ), or −d at a root.
   int sign_before(std::int64_t k, int d) const {
     int s = sign_at(k);
