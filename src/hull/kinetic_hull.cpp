@@ -289,10 +289,7 @@ void KineticHull::refresh_machine_points() {
   bool all = true;
   for (int v : simplex_) all = all && machine_[v].has_value();
   if (all) {
-    MachinePoint s;
-    for (int k = 0; k < 3; ++k)
-      s[k] = (*machine_[simplex_[0]])[k] + (*machine_[simplex_[1]])[k] + (*machine_[simplex_[2]])[k] + (*machine_[simplex_[3]])[k];
-    machine_centre_ = s;
+    machine_centre_ = *machine_[simplex_[0]] + *machine_[simplex_[1]] + *machine_[simplex_[2]] + *machine_[simplex_[3]];
   }
   t_lattice_.reset();
   const exact::Integer& m = t_.mantissa();

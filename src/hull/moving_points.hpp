@@ -44,8 +44,16 @@ MovingPoint trajectory_sum(const MovingPoint& a, const MovingPoint& b, const Mov
 // coefficient |c| ≤ 2^36 as MachinePolynomials, else nothing. Then both certificate polynomials
 // below fit __int128 (coordinates ×4 and the centre sum stay ≤ 2^38, differences ≤ 2^39, every
 // cubic coefficient < 2^123), and each equals the Polynomial version's exactly (a test holds them
-// side by side): the same certificate, built without GMP.
-using MachinePoint = geometry::Point<3, poly::MachinePolynomial>;
+// side by side): the same certificate, built without GMP. The cubic comes from multilinearity:
+// the coefficient of t^k is the sum of the determinants with k rows taken from the velocities.
+struct MachinePoint {
+  std::array<std::int64_t, 3> x{}, v{};  // x + v·t per coordinate
+  friend MachinePoint operator+(const MachinePoint& a, const MachinePoint& b) {
+    MachinePoint r;
+    for (int k = 0; k < 3; ++k) r.x[k] = a.x[k] + b.x[k], r.v[k] = a.v[k] + b.v[k];
+    return r;
+  }
+};
 std::optional<MachinePoint> machine_point(const MovingPoint& p);
 poly::MachinePolynomial orientation_polynomial(const MachinePoint& p, const MachinePoint& q, const MachinePoint& r,
                                                const MachinePoint& s);

@@ -30,6 +30,13 @@ class MachinePolynomial {
     return p;
   }
 
+  static MachinePolynomial cubic_terms(__int128 c2, __int128 c3) {  // c2·t² + c3·t³
+    MachinePolynomial p;
+    p.c_[2] = c2;
+    p.set(3, c3);
+    return p;
+  }
+
   int degree() const { return degree_; }  // −1 for zero
   bool is_zero() const { return degree_ < 0; }
   __int128 operator[](int i) const { return c_[static_cast<std::size_t>(i)]; }
