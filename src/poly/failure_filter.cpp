@@ -58,8 +58,8 @@ int double_sign_at(const double* c, int n, std::int64_t k, double inv_scale) {
     y = y * x + c[i];
     bound = bound * ax + std::fabs(c[i]);
   }
-  double err = (2.0 * n + 2.0) * std::ldexp(bound, -51);  // as in filtered_sign_at (polynomial.cpp)
-  if (std::isfinite(y) && std::isfinite(bound) && bound >= std::ldexp(1.0, -900)) {
+  double err = (2.0 * n + 2.0) * (bound * 0x1p-51);  // as in filtered_sign_at (polynomial.cpp); exact scaling
+  if (std::isfinite(y) && std::isfinite(bound) && bound >= 0x1p-900) {
     if (y > err) return 1;
     if (y < -err) return -1;
   }
@@ -111,6 +111,14 @@ class Filter {
         // p strictly monotone on the range: sign_before changes at most once along it.
         int s_lo = sign_before(lo, d), s_hi = sign_before(hi, d);
         if (s_lo == s_hi) continue;
+        // Invariant: sign_before(lo) = s_lo ≠ sign_before(hi). A Newton guess in doubles (issue 9)
+        // only chooses where to look: each probe is an exact sign that narrows the bracket, so
+        // the answer is the bisection's whatever the guess.
+        if (hi - lo > 2) {
+          std::int64_t k = newton_guess(lo, hi);
+          if (k > lo && k < hi) (sign_before(k, d) == s_lo ? lo : hi) = k;
+          if (k + 1 > lo && k + 1 < hi) (sign_before(k + 1, d) == s_lo ? lo : hi) = k + 1;
+        }
         while (hi - lo > 1) {
           std::int64_t mid = lo + (hi - lo) / 2;
           (sign_before(mid, d) == s_lo ? lo : hi) = mid;
@@ -129,6 +137,28 @@ class Filter {
   }
 
  private:
+  // An approximate lattice index of the root of p in the monotone range [lo, hi] (a few Newton
+  // steps from the midpoint in doubles), clamped to [lo, hi − 1]; its accuracy does not matter.
+  std::int64_t newton_guess(std::int64_t lo, std::int64_t hi) const {
+    const double a = double(lo) * inv_scale_, b = double(hi) * inv_scale_;
+    double x = 0.5 * (a + b);
+    for (int it = 0; it < 8; ++it) {
+      double y = c_[n_], dy = 0;
+      for (int i = n_ - 1; i >= 0; --i) {
+        dy = dy * x + y;
+        y = y * x + c_[i];
+      }
+      if (!(dy != 0) || !std::isfinite(y / dy)) break;
+      double nx = std::clamp(x - y / dy, a, b);
+      if (nx == x) break;
+      x = nx;
+    }
+    double k = std::floor(x / inv_scale_);
+    if (!(k >= double(lo))) return lo;
+    if (!(k < double(hi))) return hi - 1;
+    return std::clamp(static_cast<std::int64_t>(k), lo, hi - 1);
+  }
+
   // floor(R·2^bits) + 1 for R ≥ 2·max_i |c_{n−i}/c_n|^{1/i} > |every root| (Fujiwara), or nothing
   // when it does not fit. The coefficients are within one ulp of the exact ones and pow, sqrt and
   // cbrt within a few ulps, so the factor 1 + 2^−20 covers every rounding.
