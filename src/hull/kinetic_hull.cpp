@@ -39,7 +39,7 @@ std::uint64_t canon_value(const KineticHull::Face& f) {
 }
 std::uint64_t canon_value(const KineticHull::Tent& t) {
   std::uint64_t h = 0x7e27;
-  for (auto* f : t.faces) h = sac::mix(h, sac::canon_key(f));
+  for (auto* f : t.list()) h = sac::mix(h, sac::canon_key(f));
   return h;
 }
 
@@ -64,6 +64,23 @@ struct Border {  // a horizon entry: the invisible neighbour and the ripped face
   FaceH nbr;
   int u, v;
 };
+
+// An immutable list shared by the closures that capture it (rip's pending faces and boundary):
+// capturing by value copies a pointer, not the list (issue 9: the vectors' copies were a large
+// part of the allocations). push puts an element in front.
+template <class T>
+struct Cell {
+  T head;
+  std::shared_ptr<const Cell> tail;
+};
+template <class T>
+using List = std::shared_ptr<const Cell<T>>;
+template <class T>
+List<T> push(List<T> l, T v) {
+  return std::make_shared<const Cell<T>>(Cell<T>{std::move(v), std::move(l)});
+}
+using Pending = List<std::pair<FaceH, int>>;  // a stack: the head is the next (face, slot)
+using Boundary = List<Border>;                 // in reverse order of discovery
 
 const Face& rec(KH* kh, FaceH f) { return kh->rt().deref(f); }
 sac::IMod<FaceH>* nbr_box(const Face& f, int s) { return static_cast<sac::IMod<FaceH>*>(f.nbr[s]); }
@@ -112,59 +129,59 @@ void tent(KH* kh, int p, Mod<Tent>* box, const std::vector<Border>& boundary) {
       }
     last.emplace_back(q, f);
   };
-  Tent t;
+  auto faces = std::make_shared<std::vector<FaceH>>();
   for (const Border& b : boundary) {  // createFace
     FaceH f = new_face(kh, p, b.u, b.v);
     set_face_neighbor(kh, f, b.u, b.v, b.nbr);
     process_edge_vertex(b.u, f);
     process_edge_vertex(b.v, f);
-    t.faces.push_back(f);
+    faces->push_back(f);
   }
-  kh->rt().write(box, t);  // setVertexFaces
+  kh->rt().write(box, Tent{std::move(faces)});  // setVertexFaces
 }
 
 // ripLoop over pending (face, neighbour slot) pairs, then sort and tent. ripFace is the push of a
 // newly ripped face's three neighbours.
-void rip_loop(KH* kh, int p, Killer me, std::vector<std::pair<FaceH, int>> pending, std::vector<Border> boundary) {
+void rip_loop(KH* kh, int p, Killer me, Pending pending, Boundary boundary) {
   sac::Runtime& rt = kh->rt();
-  if (pending.empty()) {  // sort: the horizon by edge id (Appendix A's quicksort, for stability)
-    std::sort(boundary.begin(), boundary.end(),
-              [](const Border& a, const Border& b) { return std::pair(a.u, a.v) < std::pair(b.u, b.v); });
-    tent(kh, p, me.tent, boundary);
+  if (!pending) {  // sort: the horizon by edge id (Appendix A's quicksort, for stability)
+    std::vector<Border> bd;
+    for (const Cell<Border>* c = boundary.get(); c; c = c->tail.get()) bd.push_back(c->head);
+    std::reverse(bd.begin(), bd.end());  // discovery order, as the list was built
+    std::sort(bd.begin(), bd.end(), [](const Border& a, const Border& b) { return std::pair(a.u, a.v) < std::pair(b.u, b.v); });
+    tent(kh, p, me.tent, bd);
     return;
   }
-  auto [r, s] = pending.back();
-  pending.pop_back();
+  auto [r, s] = pending->head;
+  Pending rest = pending->tail;
   const Face& R = rec(kh, r);
   const int eu = R.v[s], ev = R.v[(s + 1) % 3];
-  rt.iread(nbr_box(R, s), [kh, p, me, pending, boundary, eu, ev](FaceH g) {
+  rt.iread(nbr_box(R, s), [kh, p, me, rest, boundary, eu, ev](FaceH g) {
     KMR_CHECK(g != nullptr, "kinetic hull: a face without a neighbour");
     const Face& G = rec(kh, g);
-    kh->rt().iread(killer_box(G), [kh, p, me, pending, boundary, eu, ev, g](const Killer& k) {
+    kh->rt().iread(killer_box(G), [kh, p, me, rest, boundary, eu, ev, g](const Killer& k) {
       if (k.p >= 0) {  // ripped already (by p: g is on the current hull)
         KMR_CHECK(k.p == p, "kinetic hull: a neighbour on the current hull was ripped by another point");
-        rip_loop(kh, p, me, pending, boundary);
+        rip_loop(kh, p, me, rest, boundary);
         return;
       }
       // An invisible face met again across another edge: the answer is the one already read.
-      if (std::any_of(boundary.begin(), boundary.end(), [g](const Border& b) { return b.nbr == g; })) {
-        std::vector<Border> bd = boundary;
-        bd.push_back({g, eu, ev});
-        rip_loop(kh, p, me, pending, std::move(bd));
-        return;
-      }
+      for (const Cell<Border>* c = boundary.get(); c; c = c->tail.get())
+        if (c->head.nbr == g) {
+          rip_loop(kh, p, me, rest, push(boundary, Border{g, eu, ev}));
+          return;
+        }
       const Face& G2 = rec(kh, g);
       kh->rt().read(kh->certificate(KH::Test::visible, p, G2.v[0], G2.v[1], G2.v[2]),
-                    [kh, p, me, pending, boundary, eu, ev, g](int side) {
-                      std::vector<std::pair<FaceH, int>> pd = pending;
-                      std::vector<Border> bd = boundary;
+                    [kh, p, me, rest, boundary, eu, ev, g](int side) {
                       if (side > 0) {  // halfSpaceTest: visible, ripFace
                         kh->rt().iwrite(killer_box(rec(kh, g)), me);  // setFaceKiller
-                        for (int t = 2; t >= 0; --t) pd.emplace_back(g, t);
+                        Pending pd = rest;
+                        for (int t = 2; t >= 0; --t) pd = push(pd, std::pair(g, t));
+                        rip_loop(kh, p, me, std::move(pd), boundary);
                       } else {
-                        bd.push_back({g, eu, ev});
+                        rip_loop(kh, p, me, rest, push(boundary, Border{g, eu, ev}));
                       }
-                      rip_loop(kh, p, me, std::move(pd), std::move(bd));
                     });
     });
   });
@@ -175,7 +192,9 @@ void rip(KH* kh, int p, FaceH f) {
   sac::Runtime& rt = kh->rt();
   Killer me{p, rt.alloc<Tent>(kTent, p)};
   rt.iwrite(killer_box(rec(kh, f)), me);  // ripFace: setFaceKiller
-  rip_loop(kh, p, me, {{f, 2}, {f, 1}, {f, 0}}, {});
+  Pending pd;
+  for (int t = 2; t >= 0; --t) pd = push(pd, std::pair(f, t));  // (f, 0) on top
+  rip_loop(kh, p, me, std::move(pd), nullptr);
 }
 
 void find_face(KH* kh, FaceH f, int x);
@@ -183,9 +202,9 @@ void find_face(KH* kh, FaceH f, int x);
 // mfun search: the tent face of q whose pyramid contains x (sides (w, u, c) and (u, v, c) of
 // face (u = q, v, w)).
 void search(KH* kh, int q, Tent tent, std::size_t i, int x) {
-  KMR_CHECK(i < tent.faces.size(), "kinetic hull: no tent face of point " + std::to_string(q) +
-                                       " contains the ray to " + std::to_string(x));
-  const Face& g = rec(kh, tent.faces[i]);
+  KMR_CHECK(i < tent.list().size(), "kinetic hull: no tent face of point " + std::to_string(q) +
+                                        " contains the ray to " + std::to_string(x));
+  const Face& g = rec(kh, tent.list()[i]);
   const int v1 = g.v[1], v2 = g.v[2];
   kh->rt().read(kh->certificate(KH::Test::side, x, v2, q, -1), [kh, q, tent, i, x, v1](int side1) {
     if (side1 < 0) {
@@ -194,7 +213,7 @@ void search(KH* kh, int q, Tent tent, std::size_t i, int x) {
     }
     kh->rt().read(kh->certificate(KH::Test::side, x, q, v1, -1), [kh, q, tent, i, x](int side2) {
       if (side2 < 0) search(kh, q, tent, i + 1, x);
-      else find_face(kh, tent.faces[i], x);
+      else find_face(kh, tent.list()[i], x);
     });
   });
 }

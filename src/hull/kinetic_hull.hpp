@@ -100,8 +100,13 @@ class KineticHull {
   };
   using FaceH = sac::Mod<Face>*;
   struct Tent {  // Appendix A's getVertexFaces: the faces a point's insertion created, in order
-    std::vector<FaceH> faces;
-    bool operator==(const Tent&) const = default;
+    // Immutable and shared: closures capture a Tent by value without copying the list (issue 9).
+    std::shared_ptr<const std::vector<FaceH>> faces;
+    const std::vector<FaceH>& list() const {
+      static const std::vector<FaceH> none;
+      return faces ? *faces : none;
+    }
+    bool operator==(const Tent& o) const { return list() == o.list(); }
   };
   struct Killer {  // the point that ripped a face and the box of its tent faces (−1: alive)
     int p = -1;
