@@ -56,7 +56,7 @@ using sac::Mod;
 
 constexpr Label kFace{"hull.face"}, kNbr{"hull.face.nbr"}, kKiller{"hull.face.killer"}, kFaceHook{"hull.face.hook"},
     kTent{"hull.tent"}, kRoots{"hull.roots"}, kCertInitial{"hull.cert.initial"}, kCertVisible{"hull.cert.visible"},
-    kCertSide{"hull.cert.side"}, kCertHook{"hull.cert.hook"};
+    kCertSide{"hull.cert.side"}, kCertHook{"hull.cert.hook"}, kFindFace{"hull.find_face"};
 
 constexpr std::size_t kStack = std::size_t{1} << 30;  // virtual; continuations nest per insertion
 
@@ -220,17 +220,22 @@ void search(KH* kh, int q, Tent tent, std::size_t i, int x) {
 
 // mfun findFace: along the killer chain while the located face is visible from x.
 void find_face(KH* kh, FaceH f, int x) {
-  const Face& F = rec(kh, f);
-  sac::IMod<Killer>* killer = killer_box(F);
-  kh->rt().read(kh->certificate(KH::Test::visible, x, F.v[0], F.v[1], F.v[2]), [kh, f, x, killer](int side) {
-    if (side < 0) return;  // not visible: x ∈ pyramid(c, f) ⊂ conv(A_i), discarded
-    kh->rt().iread(killer, [kh, f, x](const Killer& k) {
-      if (k.p < 0) {
-        rip(kh, x, f);  // insertVertex: rip and tent
-        return;
-      }
-      kh->rt().read(k.tent, [kh, q = k.p, x](const Tent& t) { search(kh, q, t, 0, x); });
+  // Memoized by (f, x) as Appendix A's mfun findFace: a re-executed location that reaches the same
+  // face reuses the rest of the insertion (its trace) instead of re-running it (issue 9).
+  kh->rt().memo<int>(kFindFace, std::pair(f, x), [kh, f, x] {
+    const Face& F = rec(kh, f);
+    sac::IMod<Killer>* killer = killer_box(F);
+    kh->rt().read(kh->certificate(KH::Test::visible, x, F.v[0], F.v[1], F.v[2]), [kh, f, x, killer](int side) {
+      if (side < 0) return;  // not visible: x ∈ pyramid(c, f) ⊂ conv(A_i), discarded
+      kh->rt().iread(killer, [kh, f, x](const Killer& k) {
+        if (k.p < 0) {
+          rip(kh, x, f);  // insertVertex: rip and tent
+          return;
+        }
+        kh->rt().read(k.tent, [kh, q = k.p, x](const Tent& t) { search(kh, q, t, 0, x); });
+      });
     });
+    return 0;
   });
 }
 
