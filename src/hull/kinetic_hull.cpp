@@ -306,15 +306,17 @@ void KineticHull::start() {
   run();
 }
 
-void KineticHull::refresh_machine_points() {
-  machine_.clear();
-  for (const MovingPoint& p : pts_) machine_.push_back(machine_point(p));
+void KineticHull::refresh_machine_points(int x) {
+  if (x < 0) {
+    machine_.clear();
+    for (const MovingPoint& p : pts_) machine_.push_back(machine_point(p));
+  } else {
+    machine_[static_cast<std::size_t>(x)] = machine_point(pts_[static_cast<std::size_t>(x)]);
+  }
   machine_centre_.reset();
   bool all = true;
   for (int v : simplex_) all = all && machine_[v].has_value();
-  if (all) {
-    machine_centre_ = *machine_[simplex_[0]] + *machine_[simplex_[1]] + *machine_[simplex_[2]] + *machine_[simplex_[3]];
-  }
+  if (all) machine_centre_ = *machine_[simplex_[0]] + *machine_[simplex_[1]] + *machine_[simplex_[2]] + *machine_[simplex_[3]];
   t_lattice_.reset();
   const exact::Integer& m = t_.mantissa();
   if (t_.exponent() <= 0 && t_.exponent() >= -62 && exact::bit_length(m) <= 52)
@@ -403,7 +405,7 @@ void KineticHull::change_motion(int x, MovingPoint r) {
   auto restore = [&] {
     pts_[x] = old;
     centre_sum_ = old_sum;
-    refresh_machine_points();
+    refresh_machine_points(x);
   };
   std::vector<int> live_order;
   for (int y : order_)
@@ -424,7 +426,7 @@ void KineticHull::change_motion(int x, MovingPoint r) {
   }
   const bool centre = std::count(before.begin(), before.end(), x) > 0;
   if (centre) centre_sum_ = trajectory_sum(pts_[before[0]], pts_[before[1]], pts_[before[2]], pts_[before[3]]);
-  refresh_machine_points();
+  refresh_machine_points(x);
   std::vector<CertificateKey> affected;
   if (centre)
     for (const auto& [key, reg] : certs_)

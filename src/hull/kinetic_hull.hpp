@@ -140,7 +140,9 @@ class KineticHull {
   };
   CertificatePolynomial polynomial(Test test, int a, int b, int c, int d) const;
   int sign_before_t(const CertificatePolynomial& p) const;  // outcome in a from-scratch reference run
-  void refresh_machine_points();
+  // The machine forms of point x (all points when x < 0), the centre sum's and t_'s lattice form
+  // (t_lattice_ is used by from-scratch references only, whose t_ never changes).
+  void refresh_machine_points(int x = -1);
   std::string describe(Test test, int a, int b, int c, int d) const;
 
   struct Registration {
