@@ -17,15 +17,8 @@ using kmr::exact::Dyadic;
 using kmr::exact::Integer;
 using kmr::hull::KineticHull;
 using kmr::hull::MovingPoint;
+using kmr::hull::linear;
 using kmr::poly::Polynomial;
-
-MovingPoint linear(long long x, long long y, long long z, long long vx, long long vy, long long vz) {
-  MovingPoint p;
-  p[0] = Polynomial(std::vector<Integer>{x, vx});
-  p[1] = Polynomial(std::vector<Integer>{y, vy});
-  p[2] = Polynomial(std::vector<Integer>{z, vz});
-  return p;
-}
 
 // "" if CGAL's hull at some now − δ·2^-j equals the kinetic hull; else the last difference.
 std::string judge(const KineticHull& kh, const Dyadic& now, int bits) {

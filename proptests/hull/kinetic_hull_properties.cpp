@@ -21,15 +21,8 @@ using kmr::exact::Dyadic;
 using kmr::exact::Integer;
 using kmr::hull::KineticHull;
 using kmr::hull::MovingPoint;
+using kmr::hull::linear;
 using kmr::poly::Polynomial;
-
-MovingPoint linear(long long x, long long y, long long z, long long vx, long long vy, long long vz) {
-  MovingPoint p;
-  p[0] = Polynomial(std::vector<Integer>{x, vx});
-  p[1] = Polynomial(std::vector<Integer>{y, vy});
-  p[2] = Polynomial(std::vector<Integer>{z, vz});
-  return p;
-}
 
 // Families: 0 generic; 1 every point starts on the plane z = 0; 2 a small grid at t = 0 (coplanar,
 // collinear, even equal starting points); 3 most points cross the plane x = 0 together at the lattice

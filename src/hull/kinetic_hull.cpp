@@ -23,6 +23,7 @@
 #include <algorithm>
 
 #include "exact/error.hpp"
+#include "poly/failure_filter.hpp"
 #include "hull/priorities.hpp"
 
 namespace kmr::hull {
@@ -38,7 +39,7 @@ std::uint64_t canon_value(const KineticHull::Face& f) {
 }
 std::uint64_t canon_value(const KineticHull::Tent& t) {
   std::uint64_t h = 0x7e27;
-  for (auto* f : t.faces) h = sac::mix(h, sac::canon_key(f));
+  for (auto* f : t.list()) h = sac::mix(h, sac::canon_key(f));
   return h;
 }
 
@@ -55,7 +56,7 @@ using sac::Mod;
 
 constexpr Label kFace{"hull.face"}, kNbr{"hull.face.nbr"}, kKiller{"hull.face.killer"}, kFaceHook{"hull.face.hook"},
     kTent{"hull.tent"}, kRoots{"hull.roots"}, kCertInitial{"hull.cert.initial"}, kCertVisible{"hull.cert.visible"},
-    kCertSide{"hull.cert.side"}, kCertHook{"hull.cert.hook"};
+    kCertSide{"hull.cert.side"}, kCertHook{"hull.cert.hook"}, kFindFace{"hull.find_face"};
 
 constexpr std::size_t kStack = std::size_t{1} << 30;  // virtual; continuations nest per insertion
 
@@ -63,6 +64,23 @@ struct Border {  // a horizon entry: the invisible neighbour and the ripped face
   FaceH nbr;
   int u, v;
 };
+
+// An immutable list shared by the closures that capture it (rip's pending faces and boundary):
+// capturing by value copies a pointer, not the list (issue 9: the vectors' copies were a large
+// part of the allocations). push puts an element in front.
+template <class T>
+struct Cell {
+  T head;
+  std::shared_ptr<const Cell> tail;
+};
+template <class T>
+using List = std::shared_ptr<const Cell<T>>;
+template <class T>
+List<T> push(List<T> l, T v) {
+  return std::make_shared<const Cell<T>>(Cell<T>{std::move(v), std::move(l)});
+}
+using Pending = List<std::pair<FaceH, int>>;  // a stack: the head is the next (face, slot)
+using Boundary = List<Border>;                 // in reverse order of discovery
 
 const Face& rec(KH* kh, FaceH f) { return kh->rt().deref(f); }
 sac::IMod<FaceH>* nbr_box(const Face& f, int s) { return static_cast<sac::IMod<FaceH>*>(f.nbr[s]); }
@@ -111,59 +129,59 @@ void tent(KH* kh, int p, Mod<Tent>* box, const std::vector<Border>& boundary) {
       }
     last.emplace_back(q, f);
   };
-  Tent t;
+  auto faces = std::make_shared<std::vector<FaceH>>();
   for (const Border& b : boundary) {  // createFace
     FaceH f = new_face(kh, p, b.u, b.v);
     set_face_neighbor(kh, f, b.u, b.v, b.nbr);
     process_edge_vertex(b.u, f);
     process_edge_vertex(b.v, f);
-    t.faces.push_back(f);
+    faces->push_back(f);
   }
-  kh->rt().write(box, t);  // setVertexFaces
+  kh->rt().write(box, Tent{std::move(faces)});  // setVertexFaces
 }
 
 // ripLoop over pending (face, neighbour slot) pairs, then sort and tent. ripFace is the push of a
 // newly ripped face's three neighbours.
-void rip_loop(KH* kh, int p, Killer me, std::vector<std::pair<FaceH, int>> pending, std::vector<Border> boundary) {
+void rip_loop(KH* kh, int p, Killer me, Pending pending, Boundary boundary) {
   sac::Runtime& rt = kh->rt();
-  if (pending.empty()) {  // sort: the horizon by edge id (Appendix A's quicksort, for stability)
-    std::sort(boundary.begin(), boundary.end(),
-              [](const Border& a, const Border& b) { return std::pair(a.u, a.v) < std::pair(b.u, b.v); });
-    tent(kh, p, me.tent, boundary);
+  if (!pending) {  // sort: the horizon by edge id (Appendix A's quicksort, for stability)
+    std::vector<Border> bd;
+    for (const Cell<Border>* c = boundary.get(); c; c = c->tail.get()) bd.push_back(c->head);
+    std::reverse(bd.begin(), bd.end());  // discovery order, as the list was built
+    std::sort(bd.begin(), bd.end(), [](const Border& a, const Border& b) { return std::pair(a.u, a.v) < std::pair(b.u, b.v); });
+    tent(kh, p, me.tent, bd);
     return;
   }
-  auto [r, s] = pending.back();
-  pending.pop_back();
+  auto [r, s] = pending->head;
+  Pending rest = pending->tail;
   const Face& R = rec(kh, r);
   const int eu = R.v[s], ev = R.v[(s + 1) % 3];
-  rt.iread(nbr_box(R, s), [kh, p, me, pending, boundary, eu, ev](FaceH g) {
+  rt.iread(nbr_box(R, s), [kh, p, me, rest, boundary, eu, ev](FaceH g) {
     KMR_CHECK(g != nullptr, "kinetic hull: a face without a neighbour");
     const Face& G = rec(kh, g);
-    kh->rt().iread(killer_box(G), [kh, p, me, pending, boundary, eu, ev, g](const Killer& k) {
+    kh->rt().iread(killer_box(G), [kh, p, me, rest, boundary, eu, ev, g](const Killer& k) {
       if (k.p >= 0) {  // ripped already (by p: g is on the current hull)
         KMR_CHECK(k.p == p, "kinetic hull: a neighbour on the current hull was ripped by another point");
-        rip_loop(kh, p, me, pending, boundary);
+        rip_loop(kh, p, me, rest, boundary);
         return;
       }
       // An invisible face met again across another edge: the answer is the one already read.
-      if (std::any_of(boundary.begin(), boundary.end(), [g](const Border& b) { return b.nbr == g; })) {
-        std::vector<Border> bd = boundary;
-        bd.push_back({g, eu, ev});
-        rip_loop(kh, p, me, pending, std::move(bd));
-        return;
-      }
+      for (const Cell<Border>* c = boundary.get(); c; c = c->tail.get())
+        if (c->head.nbr == g) {
+          rip_loop(kh, p, me, rest, push(boundary, Border{g, eu, ev}));
+          return;
+        }
       const Face& G2 = rec(kh, g);
       kh->rt().read(kh->certificate(KH::Test::visible, p, G2.v[0], G2.v[1], G2.v[2]),
-                    [kh, p, me, pending, boundary, eu, ev, g](int side) {
-                      std::vector<std::pair<FaceH, int>> pd = pending;
-                      std::vector<Border> bd = boundary;
+                    [kh, p, me, rest, boundary, eu, ev, g](int side) {
                       if (side > 0) {  // halfSpaceTest: visible, ripFace
                         kh->rt().iwrite(killer_box(rec(kh, g)), me);  // setFaceKiller
-                        for (int t = 2; t >= 0; --t) pd.emplace_back(g, t);
+                        Pending pd = rest;
+                        for (int t = 2; t >= 0; --t) pd = push(pd, std::pair(g, t));
+                        rip_loop(kh, p, me, std::move(pd), boundary);
                       } else {
-                        bd.push_back({g, eu, ev});
+                        rip_loop(kh, p, me, rest, push(boundary, Border{g, eu, ev}));
                       }
-                      rip_loop(kh, p, me, std::move(pd), std::move(bd));
                     });
     });
   });
@@ -174,7 +192,9 @@ void rip(KH* kh, int p, FaceH f) {
   sac::Runtime& rt = kh->rt();
   Killer me{p, rt.alloc<Tent>(kTent, p)};
   rt.iwrite(killer_box(rec(kh, f)), me);  // ripFace: setFaceKiller
-  rip_loop(kh, p, me, {{f, 2}, {f, 1}, {f, 0}}, {});
+  Pending pd;
+  for (int t = 2; t >= 0; --t) pd = push(pd, std::pair(f, t));  // (f, 0) on top
+  rip_loop(kh, p, me, std::move(pd), nullptr);
 }
 
 void find_face(KH* kh, FaceH f, int x);
@@ -182,9 +202,9 @@ void find_face(KH* kh, FaceH f, int x);
 // mfun search: the tent face of q whose pyramid contains x (sides (w, u, c) and (u, v, c) of
 // face (u = q, v, w)).
 void search(KH* kh, int q, Tent tent, std::size_t i, int x) {
-  KMR_CHECK(i < tent.faces.size(), "kinetic hull: no tent face of point " + std::to_string(q) +
-                                       " contains the ray to " + std::to_string(x));
-  const Face& g = rec(kh, tent.faces[i]);
+  KMR_CHECK(i < tent.list().size(), "kinetic hull: no tent face of point " + std::to_string(q) +
+                                        " contains the ray to " + std::to_string(x));
+  const Face& g = rec(kh, tent.list()[i]);
   const int v1 = g.v[1], v2 = g.v[2];
   kh->rt().read(kh->certificate(KH::Test::side, x, v2, q, -1), [kh, q, tent, i, x, v1](int side1) {
     if (side1 < 0) {
@@ -193,24 +213,29 @@ void search(KH* kh, int q, Tent tent, std::size_t i, int x) {
     }
     kh->rt().read(kh->certificate(KH::Test::side, x, q, v1, -1), [kh, q, tent, i, x](int side2) {
       if (side2 < 0) search(kh, q, tent, i + 1, x);
-      else find_face(kh, tent.faces[i], x);
+      else find_face(kh, tent.list()[i], x);
     });
   });
 }
 
 // mfun findFace: along the killer chain while the located face is visible from x.
 void find_face(KH* kh, FaceH f, int x) {
-  const Face& F = rec(kh, f);
-  sac::IMod<Killer>* killer = killer_box(F);
-  kh->rt().read(kh->certificate(KH::Test::visible, x, F.v[0], F.v[1], F.v[2]), [kh, f, x, killer](int side) {
-    if (side < 0) return;  // not visible: x ∈ pyramid(c, f) ⊂ conv(A_i), discarded
-    kh->rt().iread(killer, [kh, f, x](const Killer& k) {
-      if (k.p < 0) {
-        rip(kh, x, f);  // insertVertex: rip and tent
-        return;
-      }
-      kh->rt().read(k.tent, [kh, q = k.p, x](const Tent& t) { search(kh, q, t, 0, x); });
+  // Memoized by (f, x) as Appendix A's mfun findFace: a re-executed location that reaches the same
+  // face reuses the rest of the insertion (its trace) instead of re-running it (issue 9).
+  kh->rt().memo<int>(kFindFace, std::pair(f, x), [kh, f, x] {
+    const Face& F = rec(kh, f);
+    sac::IMod<Killer>* killer = killer_box(F);
+    kh->rt().read(kh->certificate(KH::Test::visible, x, F.v[0], F.v[1], F.v[2]), [kh, f, x, killer](int side) {
+      if (side < 0) return;  // not visible: x ∈ pyramid(c, f) ⊂ conv(A_i), discarded
+      kh->rt().iread(killer, [kh, f, x](const Killer& k) {
+        if (k.p < 0) {
+          rip(kh, x, f);  // insertVertex: rip and tent
+          return;
+        }
+        kh->rt().read(k.tent, [kh, q = k.p, x](const Tent& t) { search(kh, q, t, 0, x); });
+      });
     });
+    return 0;
   });
 }
 
@@ -274,10 +299,28 @@ void KineticHull::start() {
   refuse_identical_trajectories(pts_);
   simplex_ = initial_simplex_of(pts_, live_order);
   centre_sum_ = trajectory_sum(pts_[simplex_[0]], pts_[simplex_[1]], pts_[simplex_[2]], pts_[simplex_[3]]);
+  refresh_machine_points();
   if (present_box_.empty())
     for (std::size_t x = 0; x < pts_.size(); ++x)
       present_box_.push_back(rt_.input<bool>(sac::Label("hull.present"), x, present_[x]));
   run();
+}
+
+void KineticHull::refresh_machine_points(int x) {
+  if (x < 0) {
+    machine_.clear();
+    for (const MovingPoint& p : pts_) machine_.push_back(machine_point(p));
+  } else {
+    machine_[static_cast<std::size_t>(x)] = machine_point(pts_[static_cast<std::size_t>(x)]);
+  }
+  machine_centre_.reset();
+  bool all = true;
+  for (int v : simplex_) all = all && machine_[v].has_value();
+  if (all) machine_centre_ = *machine_[simplex_[0]] + *machine_[simplex_[1]] + *machine_[simplex_[2]] + *machine_[simplex_[3]];
+  t_lattice_.reset();
+  const exact::Integer& m = t_.mantissa();
+  if (t_.exponent() <= 0 && t_.exponent() >= -62 && exact::bit_length(m) <= 52)
+    t_lattice_ = std::pair(static_cast<std::int64_t>(m), static_cast<int>(-t_.exponent()));
 }
 
 KineticHull::~KineticHull() {
@@ -308,9 +351,8 @@ void KineticHull::run() {
 void KineticHull::update(const std::vector<kinetic::CertificateId>& batch) {
   KMR_CHECK(sim_ != nullptr, "KineticHull::update on a from-scratch reference");
   for (kinetic::CertificateId id : batch) {
-    auto k = by_sim_.find(id);
-    KMR_CHECK(k != by_sim_.end(), "kinetic hull: a batch names a certificate the hull does not own");
-    rt_.change(certs_.at(k->second).cert, sim_->outcome(id));
+    KMR_CHECK(id < by_sim_.size() && by_sim_[id], "kinetic hull: a batch names a certificate the hull does not own");
+    rt_.change(by_sim_[id]->cert, sim_->outcome(id));
   }
   propagate();
 }
@@ -322,12 +364,28 @@ void KineticHull::propagate() {
 }
 
 void KineticHull::index_certificate(const CertificateKey& key, bool add) {
+  if (by_point_.size() < pts_.size()) by_point_.resize(pts_.size()), by_point_live_.resize(pts_.size());
   for (int i = 1; i < 5; ++i) {
     if (key[i] < 0) continue;
-    auto& v = by_point_[key[i]];
-    if (add) v.push_back(key);
-    else v.erase(std::find(v.begin(), v.end(), key));
+    const auto x = static_cast<std::size_t>(key[i]);
+    auto& v = by_point_[x];
+    if (!add) {
+      --by_point_live_[x];
+      continue;
+    }
+    ++by_point_live_[x];
+    v.push_back(key);
+    if (v.size() > 2 * static_cast<std::size_t>(by_point_live_[x]) + 16) {  // compact: live keys, once each
+      std::sort(v.begin(), v.end());
+      v.erase(std::unique(v.begin(), v.end()), v.end());
+      std::erase_if(v, [this](const CertificateKey& k) { return !certs_.count(k); });
+    }
   }
+}
+
+void KineticHull::register_sim(kinetic::CertificateId id, Registration* reg) {
+  if (by_sim_.size() <= id) by_sim_.resize(id + 1, nullptr);
+  by_sim_[id] = reg;
 }
 
 // §2.4's motion change: every live certificate whose polynomial involves x (all centre tests and
@@ -347,6 +405,7 @@ void KineticHull::change_motion(int x, MovingPoint r) {
   auto restore = [&] {
     pts_[x] = old;
     centre_sum_ = old_sum;
+    refresh_machine_points(x);
   };
   std::vector<int> live_order;
   for (int y : order_)
@@ -367,15 +426,17 @@ void KineticHull::change_motion(int x, MovingPoint r) {
   }
   const bool centre = std::count(before.begin(), before.end(), x) > 0;
   if (centre) centre_sum_ = trajectory_sum(pts_[before[0]], pts_[before[1]], pts_[before[2]], pts_[before[3]]);
+  refresh_machine_points(x);
   std::vector<CertificateKey> affected;
   if (centre)
     for (const auto& [key, reg] : certs_)
       if (key[0] != static_cast<int>(Test::visible)) affected.push_back(key);
-  if (auto it = by_point_.find(x); it != by_point_.end())
-    affected.insert(affected.end(), it->second.begin(), it->second.end());
+  if (static_cast<std::size_t>(x) < by_point_.size())
+    for (const CertificateKey& key : by_point_[x])
+      if (certs_.count(key)) affected.push_back(key);
   std::sort(affected.begin(), affected.end());
   affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
-  std::vector<Polynomial> polys;  // all computed first: a refused change changes nothing
+  std::vector<CertificatePolynomial> polys;  // all computed first: a refused change changes nothing
   for (const CertificateKey& key : affected) {
     const Test test = static_cast<Test>(key[0]);
     polys.push_back(polynomial(test, key[1], key[2], key[3], key[4]));
@@ -390,13 +451,13 @@ void KineticHull::change_motion(int x, MovingPoint r) {
     int outcome;
     if (sim_) {
       sim_->remove(reg.sim);
-      by_sim_.erase(reg.sim);
-      reg.sim = sim_->add(polys[i]);
-      by_sim_.emplace(reg.sim, affected[i]);
+      by_sim_[reg.sim] = nullptr;
+      reg.sim = polys[i].machine ? sim_->add(*polys[i].machine) : sim_->add(polys[i].exact);
+      register_sim(reg.sim, &reg);
       ++counters_.certificates_created;
       outcome = sim_->outcome(reg.sim);
     } else {
-      outcome = poly::sign_before(polys[i], t_);
+      outcome = sign_before_t(polys[i]);
     }
     rt_.change(reg.cert, outcome);
   }
@@ -431,12 +492,28 @@ void KineticHull::set_present(int x, bool on) {
 void KineticHull::remove_point(int x) { set_present(x, false); }
 void KineticHull::insert_point(int x) { set_present(x, true); }
 
-Polynomial KineticHull::polynomial(Test test, int a, int b, int c, int d) const {
+KineticHull::CertificatePolynomial KineticHull::polynomial(Test test, int a, int b, int c, int d) const {
+  CertificatePolynomial r;
+  const auto& M = machine_;
   switch (test) {
-    case Test::initial: return orientation_polynomial(pts_[a], pts_[b], pts_[c], pts_[d]);
-    case Test::visible: return orientation_polynomial(pts_[b], pts_[c], pts_[d], pts_[a]);  // face bcd, point a
-    default: return centre_side_polynomial(pts_[b], pts_[c], pts_[a], centre_sum_);       // point a, side (b, c, centre)
+    case Test::initial:
+      if (M[a] && M[b] && M[c] && M[d]) r.machine = orientation_polynomial(*M[a], *M[b], *M[c], *M[d]);
+      else r.exact = orientation_polynomial(pts_[a], pts_[b], pts_[c], pts_[d]);
+      break;
+    case Test::visible:  // face bcd, point a
+      if (M[a] && M[b] && M[c] && M[d]) r.machine = orientation_polynomial(*M[b], *M[c], *M[d], *M[a]);
+      else r.exact = orientation_polynomial(pts_[b], pts_[c], pts_[d], pts_[a]);
+      break;
+    default:  // point a, side (b, c, centre)
+      if (M[a] && M[b] && M[c] && machine_centre_) r.machine = centre_side_polynomial(*M[b], *M[c], *M[a], *machine_centre_);
+      else r.exact = centre_side_polynomial(pts_[b], pts_[c], pts_[a], centre_sum_);
   }
+  return r;
+}
+
+int KineticHull::sign_before_t(const CertificatePolynomial& p) const {
+  if (p.machine && t_lattice_) return poly::sign_before_lattice(*p.machine, t_lattice_->first, t_lattice_->second);
+  return poly::sign_before(p.machine ? p.machine->to_polynomial() : p.exact, t_);
 }
 
 std::string KineticHull::describe(Test test, int a, int b, int c, int d) const {
@@ -459,14 +536,14 @@ sac::Mod<int>* KineticHull::certificate(Test test, int a, int b, int c, int d) {
   if (it != certs_.end()) {
     initial = it->second.cert->value;  // the same polynomial's current outcome
   } else {
-    Polynomial P = polynomial(test, a, b, c, d);
+    CertificatePolynomial P = polynomial(test, a, b, c, d);
     if (P.is_zero()) throw InputError(describe(test, a, b, c, d));
     if (sim_) {
-      sid = sim_->add(P);
+      sid = P.machine ? sim_->add(*P.machine) : sim_->add(P.exact);
       initial = sim_->outcome(sid);
       ++counters_.certificates_created;
     } else {
-      initial = poly::sign_before(P, t_);
+      initial = sign_before_t(P);
     }
   }
   sac::Mod<int>* m = rt_.traceable<int>(label_of(test), initial, a, b, c, d);
@@ -475,9 +552,9 @@ sac::Mod<int>* KineticHull::certificate(Test test, int a, int b, int c, int d) {
     it->second.cert = m;  // reused, or re-created under its key: the simulator keeps its certificate
     it->second.hook = hook;
   } else {
-    certs_.emplace(key, Registration{m, hook, sid});
+    Registration& reg = certs_.emplace(key, Registration{m, hook, sid}).first->second;
     index_certificate(key, true);
-    if (sim_) by_sim_.emplace(sid, key);
+    if (sim_) register_sim(sid, &reg);
   }
   return m;
 }
@@ -487,10 +564,10 @@ void KineticHull::certificate_discarded(const CertificateKey& key, sac::HookId s
   if (it == certs_.end() || it->second.hook != self) return;  // a successor's registration
   if (sim_) {
     sim_->remove(it->second.sim);
-    by_sim_.erase(it->second.sim);
+    by_sim_[it->second.sim] = nullptr;
   }
-  index_certificate(key, false);
   certs_.erase(it);
+  index_certificate(key, false);
 }
 
 void KineticHull::face_created(FaceH f, sac::HookId hook) { faces_[rt_.deref(f).v] = {f, hook}; }
@@ -525,6 +602,7 @@ std::vector<int> KineticHull::vertices() const {
 std::vector<KineticHull::CertificateKey> KineticHull::certificate_keys() const {
   std::vector<CertificateKey> k;
   for (const auto& [key, reg] : certs_) k.push_back(key);
+  std::sort(k.begin(), k.end());
   return k;
 }
 

@@ -100,8 +100,13 @@ class KineticHull {
   };
   using FaceH = sac::Mod<Face>*;
   struct Tent {  // Appendix A's getVertexFaces: the faces a point's insertion created, in order
-    std::vector<FaceH> faces;
-    bool operator==(const Tent&) const = default;
+    // Immutable and shared: closures capture a Tent by value without copying the list (issue 9).
+    std::shared_ptr<const std::vector<FaceH>> faces;
+    const std::vector<FaceH>& list() const {
+      static const std::vector<FaceH> none;
+      return faces ? *faces : none;
+    }
+    bool operator==(const Tent& o) const { return list() == o.list(); }
   };
   struct Killer {  // the point that ripped a face and the box of its tent faces (−1: alive)
     int p = -1;
@@ -124,7 +129,20 @@ class KineticHull {
   void propagate();
   void set_present(int x, bool on);
   void index_certificate(const CertificateKey& key, bool add);
-  Polynomial polynomial(Test test, int a, int b, int c, int d) const;
+  struct Registration;
+  void register_sim(kinetic::CertificateId id, Registration* reg);
+  // A certificate's polynomial: in machine form when its points have one (moving_points.hpp), else
+  // as a Polynomial; the two are the same polynomial.
+  struct CertificatePolynomial {
+    std::optional<poly::MachinePolynomial> machine;
+    Polynomial exact;  // when !machine
+    bool is_zero() const { return machine ? machine->is_zero() : exact.is_zero(); }
+  };
+  CertificatePolynomial polynomial(Test test, int a, int b, int c, int d) const;
+  int sign_before_t(const CertificatePolynomial& p) const;  // outcome in a from-scratch reference run
+  // The machine forms of point x (all points when x < 0), the centre sum's and t_'s lattice form
+  // (t_lattice_ is used by from-scratch references only, whose t_ never changes).
+  void refresh_machine_points(int x = -1);
   std::string describe(Test test, int a, int b, int c, int d) const;
 
   struct Registration {
@@ -138,13 +156,28 @@ class KineticHull {
   std::vector<int> order_;
   std::vector<bool> present_;
   std::vector<sac::Mod<bool>*> present_box_;                          // inputs, one per point
-  std::map<int, std::vector<CertificateKey>> by_point_;              // point → its live certificates
+  // point → keys of its certificates: every live one, plus removed ones (skipped and compacted
+  // away lazily, so a removal costs nothing); by_point_live_ counts the live ones.
+  std::vector<std::vector<CertificateKey>> by_point_;
+  std::vector<int> by_point_live_;
   std::array<int, 4> simplex_{};
   MovingPoint centre_sum_;
+  std::vector<std::optional<MachinePoint>> machine_;  // machine forms of pts_ (issue 9)
+  std::optional<MachinePoint> machine_centre_;        // of centre_sum_, when all four have one
+  std::optional<std::pair<std::int64_t, int>> t_lattice_;  // t_ = k·2^-b with |k| < 2^53, 0 ≤ b ≤ 62
   sac::Runtime rt_;
-  std::map<CertificateKey, Registration> certs_;                       // live certificates
-  std::unordered_map<kinetic::CertificateId, CertificateKey> by_sim_;  // simulator id → key (lookup only)
-  std::map<std::array<int, 3>, std::pair<FaceH, sac::HookId>> faces_;  // live face records by vertices
+  // Lookup-only tables (iteration order never reaches a result: what is listed is sorted first).
+  struct KeyHash {
+    template <std::size_t N>
+    std::size_t operator()(const std::array<int, N>& k) const {
+      std::uint64_t h = 0x6b6579;
+      for (int v : k) h = sac::mix(h, static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)));
+      return static_cast<std::size_t>(h);
+    }
+  };
+  std::unordered_map<CertificateKey, Registration, KeyHash> certs_;  // live certificates
+  std::vector<Registration*> by_sim_;  // simulator id → its live registration (node-stable), or null
+  std::unordered_map<std::array<int, 3>, std::pair<FaceH, sac::HookId>, KeyHash> faces_;  // live faces by vertices
   KineticCounters counters_;
 };
 

@@ -54,6 +54,62 @@ Polynomial centre_side_polynomial(const MovingPoint& u, const MovingPoint& v, co
   return geometry::orientation_value<Polynomial>(times4(u), times4(v), centre_sum, times4(x));
 }
 
+std::optional<MachinePoint> machine_point(const MovingPoint& p) {
+  MachinePoint m;
+  for (int k = 0; k < 3; ++k) {
+    const auto& cs = p[k].coefficients();
+    if (cs.size() > 2) return std::nullopt;
+    std::int64_t c[2] = {0, 0};
+    for (std::size_t j = 0; j < cs.size(); ++j) {
+      if (exact::bit_length(cs[j]) > 36) return std::nullopt;  // |c| < 2^36
+      c[j] = static_cast<long long>(cs[j]);
+    }
+    m.x[k] = c[0], m.v[k] = c[1];
+  }
+  return m;
+}
+
+namespace {
+using I = __int128;
+// det[a; b; c] of 3-vectors with |entries| ≤ 2^39: |det| < 6·2^117 < 2^120.
+I det3(const std::array<std::int64_t, 3>& a, const std::array<std::int64_t, 3>& b, const std::array<std::int64_t, 3>& c) {
+  return I(a[0]) * (I(b[1]) * c[2] - I(b[2]) * c[1]) - I(a[1]) * (I(b[0]) * c[2] - I(b[2]) * c[0]) +
+         I(a[2]) * (I(b[0]) * c[1] - I(b[1]) * c[0]);
+}
+// det of the rows (x_i + v_i·t), i = 0, 1, 2, as a cubic (multilinearity in the rows).
+poly::MachinePolynomial rows_determinant(const MachinePoint& u, const MachinePoint& v, const MachinePoint& w) {
+  const I c0 = det3(u.x, v.x, w.x);
+  const I c1 = det3(u.v, v.x, w.x) + det3(u.x, v.v, w.x) + det3(u.x, v.x, w.v);
+  const I c2 = det3(u.x, v.v, w.v) + det3(u.v, v.x, w.v) + det3(u.v, v.v, w.x);
+  const I c3 = det3(u.v, v.v, w.v);
+  return poly::MachinePolynomial::linear(c0, c1) + poly::MachinePolynomial::cubic_terms(c2, c3);
+}
+MachinePoint difference(const MachinePoint& a, const MachinePoint& b, std::int64_t ka = 1, std::int64_t kb = 1) {
+  MachinePoint r;
+  for (int k = 0; k < 3; ++k) r.x[k] = ka * a.x[k] - kb * b.x[k], r.v[k] = ka * a.v[k] - kb * b.v[k];
+  return r;
+}
+}  // namespace
+
+// orientation_value(p, q, r, s) = det[q − p, r − p, s − p] (geometry/predicates.hpp).
+poly::MachinePolynomial orientation_polynomial(const MachinePoint& p, const MachinePoint& q, const MachinePoint& r,
+                                               const MachinePoint& s) {
+  return rows_determinant(difference(q, p), difference(r, p), difference(s, p));
+}
+
+// As the Polynomial version: det[4v − 4u, S − 4u, 4x − 4u] (entries ≤ 2^39).
+poly::MachinePolynomial centre_side_polynomial(const MachinePoint& u, const MachinePoint& v, const MachinePoint& x,
+                                               const MachinePoint& centre_sum) {
+  return rows_determinant(difference(v, u, 4, 4), difference(centre_sum, u, 1, 4), difference(x, u, 4, 4));
+}
+
+MovingPoint linear(long long x, long long y, long long z, long long vx, long long vy, long long vz) {
+  MovingPoint p;
+  const long long pos[3] = {x, y, z}, vel[3] = {vx, vy, vz};
+  for (int k = 0; k < 3; ++k) p[k] = Polynomial(std::vector<exact::Integer>{exact::Integer(pos[k]), exact::Integer(vel[k])});
+  return p;
+}
+
 MovingPoint trajectory_sum(const MovingPoint& a, const MovingPoint& b, const MovingPoint& c, const MovingPoint& d) {
   MovingPoint s;
   for (int k = 0; k < 3; ++k) s[k] = a[k] + b[k] + c[k] + d[k];

@@ -20,10 +20,12 @@
 //    degeneracy is degeneracy, so this choice is the same at every time; InputError if none.
 #include <array>
 #include <istream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "kinetic/trajectory.hpp"
+#include "poly/machine_polynomial.hpp"
 
 namespace kmr::hull {
 
@@ -42,6 +44,29 @@ Polynomial side_of_sphere_polynomial(const MovingPoint& p, const MovingPoint& q,
 Polynomial centre_side_polynomial(const MovingPoint& u, const MovingPoint& v, const MovingPoint& x,
                                   const MovingPoint& centre_sum);
 MovingPoint trajectory_sum(const MovingPoint& a, const MovingPoint& b, const MovingPoint& c, const MovingPoint& d);
+
+// The machine form (issue 9): a trajectory whose coordinates are of degree ≤ 1 with every
+// coefficient |c| ≤ 2^36 as MachinePolynomials, else nothing. Then both certificate polynomials
+// below fit __int128 (coordinates ×4 and the centre sum stay ≤ 2^38, differences ≤ 2^39, every
+// cubic coefficient < 2^123), and each equals the Polynomial version's exactly (a test holds them
+// side by side): the same certificate, built without GMP. The cubic comes from multilinearity:
+// the coefficient of t^k is the sum of the determinants with k rows taken from the velocities.
+struct MachinePoint {
+  std::array<std::int64_t, 3> x{}, v{};  // x + v·t per coordinate
+  friend MachinePoint operator+(const MachinePoint& a, const MachinePoint& b) {
+    MachinePoint r;
+    for (int k = 0; k < 3; ++k) r.x[k] = a.x[k] + b.x[k], r.v[k] = a.v[k] + b.v[k];
+    return r;
+  }
+};
+std::optional<MachinePoint> machine_point(const MovingPoint& p);
+poly::MachinePolynomial orientation_polynomial(const MachinePoint& p, const MachinePoint& q, const MachinePoint& r,
+                                               const MachinePoint& s);
+poly::MachinePolynomial centre_side_polynomial(const MachinePoint& u, const MachinePoint& v, const MachinePoint& x,
+                                               const MachinePoint& centre_sum);  // centre_sum: four machine points' sum
+
+// A linearly moving point (x, y, z) + (vx, vy, vz)·t.
+MovingPoint linear(long long x, long long y, long long z, long long vx, long long vy, long long vz);
 
 void refuse_identical_trajectories(const std::vector<MovingPoint>& points);
 std::array<int, 4> initial_simplex_of(const std::vector<MovingPoint>& points, const std::vector<int>& order);

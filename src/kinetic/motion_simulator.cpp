@@ -80,6 +80,32 @@ CertificateId MotionSimulator::add(const Polynomial& p) {
   return add_record(std::move(r));
 }
 
+CertificateId MotionSimulator::add(const poly::MachinePolynomial& p) {
+  if (p.is_zero()) throw InputError("identically zero certificate polynomial: its outcome is undefined");
+  // Degree ≤ 1 keeps the linear machine path of add(Polynomial); off the machine lattice or without
+  // the filter the exact path decides everything anyway.
+  if (!(options_.machine_fast_path && options_.failure_filter && small_lattice_) || p.degree() <= 1)
+    return add(p.to_polynomial());
+  Record r;
+  r.cubic = true;
+  r.mp = p;
+  r.outcome = poly::sign_before_lattice(p, now_k_, bits_);
+  ++counters_.machine_polynomials;
+  return add_record(std::move(r));
+}
+
+Certificate& MotionSimulator::exact_of(Record& r) {
+  if (!r.exact) {
+    Polynomial p = r.mp.to_polynomial();
+    r.approx = poly::double_coefficients(p);
+    poly::LatticeRootSolver solver(p, bits_);
+    r.exact = std::make_unique<Certificate>(Certificate{std::move(p), std::move(solver), r.outcome, std::nullopt});
+    if (r.scheduled) r.exact->failure = Integer(r.failure);
+    ++counters_.machine_polynomials_exact;
+  }
+  return *r.exact;
+}
+
 CertificateId MotionSimulator::add_linear(std::int64_t c0, std::int64_t c1) {
   if (c0 == 0 && c1 == 0) throw InputError("identically zero certificate polynomial: its outcome is undefined");
   auto small = [](std::int64_t c) { return c > -kMachineLimit && c < kMachineLimit; };
@@ -112,6 +138,14 @@ void MotionSimulator::remove(CertificateId id) {
 
 const Certificate& MotionSimulator::certificate(CertificateId id) const {
   const Record& r = record(id);
+  if (r.cubic) {  // a view with the exact polynomial (off the hot path)
+    Polynomial p = r.mp.to_polynomial();
+    std::optional<Integer> failure;
+    if (r.scheduled) failure = Integer(r.failure);
+    poly::LatticeRootSolver solver(p, bits_);
+    views_.insert_or_assign(id, Certificate{std::move(p), std::move(solver), r.outcome, std::move(failure)});
+    return views_.at(id);
+  }
   if (!r.machine) return *r.exact;
   // A view built on demand (off the hot path): the same polynomial and solver the exact path uses.
   Polynomial p(std::vector<Integer>{Integer(r.c0), Integer(r.c1)});
@@ -181,6 +215,24 @@ void MotionSimulator::schedule(Record& r, CertificateId id) {
       r.failure = *k;
       r.scheduled = true;
     }
+  } else if (r.cubic) {
+    poly::FailureFilterResult f = poly::filtered_next_failure(r.mp, bits_, now_k_, last_k_);
+    if (f.decided) {
+      ++counters_.poly_filter_decided;
+      if (f.failure) {
+        r.failure = *f.failure;
+        r.scheduled = true;
+      }
+      if (r.exact) {
+        r.exact->failure.reset();
+        if (f.failure) r.exact->failure = Integer(*f.failure);
+      }
+    } else {
+      ++counters_.poly_filter_fallbacks;
+      exact_of(r);
+      schedule_exact(r, id);
+      return;  // schedule_exact pushed the queue entry
+    }
   } else {
     Certificate& c = *r.exact;
     bool decided = false;
@@ -208,6 +260,19 @@ void MotionSimulator::schedule(Record& r, CertificateId id) {
     }
   }
   if (r.scheduled && small_lattice_) {
+    lattice_queue_.push(r.failure, id);
+  }
+}
+
+void MotionSimulator::schedule_exact(Record& r, CertificateId id) {
+  Certificate& c = *r.exact;
+  long long before = c.solver.sturm_queries;
+  c.failure = c.solver.next_failure_after(now_, lattice_point(last_k_big_));
+  counters_.sturm_queries += c.solver.sturm_queries - before;
+  r.scheduled = false;
+  if (c.failure) {
+    r.scheduled = true;
+    r.failure = static_cast<std::int64_t>(*c.failure);  // cubic records live on a small lattice
     lattice_queue_.push(r.failure, id);
   }
 }
@@ -271,6 +336,12 @@ std::optional<std::vector<CertificateId>> MotionSimulator::next_batch(const Dyad
       r.pending = true;
       pending_.push_back(id);
       continue;
+    } else if (r.cubic) {
+      if (r.exact) {
+        r.exact->failure.reset();
+        r.exact->outcome = r.outcome;
+      }
+      KMR_CHECK(r.outcome == poly::sign_before_lattice(r.mp, now_k_, bits_), "a popped failure did not change the sign");
     } else {
       r.exact->failure.reset();
       r.exact->outcome = r.outcome;

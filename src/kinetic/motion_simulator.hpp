@@ -66,6 +66,9 @@ struct SimulatorCounters {
   // Exact-path certificates (degree ≥ 2, or big coefficients) whose failure interval the double
   // filter of poly/failure_filter.hpp decided, or left to the Sturm path.
   long long poly_filter_decided = 0, poly_filter_fallbacks = 0;
+  // Certificates added in machine form (add(MachinePolynomial)), and those of them that needed
+  // their exact Polynomial (a filter fallback or a certificate() view).
+  long long machine_polynomials = 0, machine_polynomials_exact = 0;
 };
 
 struct SimulatorOptions {
@@ -88,6 +91,11 @@ class MotionSimulator {
   Dyadic lattice_point(const Integer& k) const { return Dyadic(k, -bits_); }
 
   CertificateId add(const Polynomial& p);
+  // A certificate of degree ≤ 3 in machine form (the kinetic hull's cubics): on a machine lattice
+  // with the failure filter on, kept without GMP (the exact Polynomial and its Sturm solver are
+  // built only if the double filter leaves a query undecided); otherwise add(p.to_polynomial()).
+  // Either way every outcome and failure interval is the one add(p.to_polynomial()) would give.
+  CertificateId add(const poly::MachinePolynomial& p);
   // The certificate c0 + c1·t, without building a Polynomial (the fast path when it applies).
   CertificateId add_linear(std::int64_t c0, std::int64_t c1);
   void remove(CertificateId id);
@@ -105,11 +113,14 @@ class MotionSimulator {
   const SimulatorCounters& counters() const { return counters_; }
 
  private:
-  // One certificate. Machine records hold c0 + c1·t; the others hold the exact Certificate.
+  // One certificate. Machine records hold c0 + c1·t; cubic records hold a MachinePolynomial (and
+  // the exact Certificate once needed); the others hold the exact Certificate.
   struct Record {
     std::int64_t c0 = 0, c1 = 0;
     std::int64_t failure = 0;          // the scheduled interval, when scheduled and the lattice is small
     bool machine = false, scheduled = false;
+    bool cubic = false;                // a MachinePolynomial record (small lattice only)
+    poly::MachinePolynomial mp;
     bool pending = false;              // popped machine record whose rescheduling is deferred
     int outcome = 0;
     std::unique_ptr<Certificate> exact;
@@ -122,6 +133,8 @@ class MotionSimulator {
   Record& record(CertificateId id);
   const Record& record(CertificateId id) const;
   void schedule(Record& r, CertificateId id);
+  void schedule_exact(Record& r, CertificateId id);  // the exact record's failure interval
+  Certificate& exact_of(Record& r);                  // a cubic record's exact Certificate, built once
   int machine_sign_before(const Record& r, std::int64_t k);  // exact sign just before kδ
   std::optional<std::int64_t> machine_failure(const Record& r);     // interval in [now, last), counted
   std::optional<std::int64_t> machine_failure_uncounted(const Record& r) const;

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace kmr::poly {
@@ -47,13 +48,34 @@ Iv horner(const Coefficients& c, int n, Iv x) {
   return y;
 }
 
+// The double sign of p(kδ) with filtered_sign_at's rigorous bound (polynomial.cpp); 0: undecided.
+int double_sign_at(const double* c, int n, std::int64_t k, double inv_scale) {
+  if (!(k > -(std::int64_t{1} << 53) && k < (std::int64_t{1} << 53))) return 0;
+  double x = double(k) * inv_scale;  // exact
+  double ax = std::fabs(x);
+  double y = c[n], bound = std::fabs(c[n]);
+  for (int i = n - 1; i >= 0; --i) {
+    y = y * x + c[i];
+    bound = bound * ax + std::fabs(c[i]);
+  }
+  double err = (2.0 * n + 2.0) * (bound * 0x1p-51);  // as in filtered_sign_at (polynomial.cpp); exact scaling
+  if (std::isfinite(y) && std::isfinite(bound) && bound >= 0x1p-900) {
+    if (y > err) return 1;
+    if (y < -err) return -1;
+  }
+  return 0;
+}
+
+// The filter over rounded coefficients c[0..n] (each within one ulp of the exact one); ExactSign(k)
+// is the exact sign of p(kδ), asked only when the double evaluation cannot decide it.
+template <class ExactSign>
 class Filter {
  public:
-  Filter(const Polynomial& p, const DoubleCoefficients& approx, int bits)
-      : p_(p), approx_(approx), bits_(bits), n_(p.degree()), inv_scale_(std::ldexp(1.0, -bits)) {
-    if (!approx.usable || n_ > kMaxDegree) return;
+  Filter(const double* c, int n, bool usable, int bits, ExactSign exact)
+      : c_(c), usable_(usable), exact_(exact), n_(n), inv_scale_(std::ldexp(1.0, -bits)) {
+    if (!usable_ || n_ > kMaxDegree) return;
     for (int i = 0; i <= n_; ++i)  // mpz_get_d truncates: < 1 ulp, inside the widening
-      coeff_[static_cast<std::size_t>(i)] = widened(approx.c[static_cast<std::size_t>(i)], approx.c[static_cast<std::size_t>(i)]);
+      coeff_[static_cast<std::size_t>(i)] = widened(c[i], c[i]);
     for (int i = 1; i <= n_; ++i)
       deriv_[static_cast<std::size_t>(i - 1)] = mul(Iv{double(i), double(i)}, coeff_[static_cast<std::size_t>(i)]);
     if (n_ == 0) deriv_[0] = {0, 0};
@@ -61,7 +83,14 @@ class Filter {
 
   FailureFilterResult run(std::int64_t a, std::int64_t b) {
     FailureFilterResult r;
-    if (!approx_.usable || n_ > kMaxDegree) return r;
+    if (!usable_ || n_ > kMaxDegree) return r;
+    // Every real root r has |r| < R (Fujiwara's bound): intervals k with |k|·δ > R hold none, so the
+    // query shrinks to [max(a, −K), min(b, K)) with K = floor(R·2^b) + 1 (issue 9: most cubics'
+    // roots lie far below the horizon, whose empty upper ranges were subdivided one by one).
+    if (std::optional<std::int64_t> K = root_bound_index()) {
+      a = std::max(a, -*K);
+      b = std::min(b, *K);
+    }
     if (a >= b) {
       r.decided = true;
       return r;
@@ -82,6 +111,14 @@ class Filter {
         // p strictly monotone on the range: sign_before changes at most once along it.
         int s_lo = sign_before(lo, d), s_hi = sign_before(hi, d);
         if (s_lo == s_hi) continue;
+        // Invariant: sign_before(lo) = s_lo ≠ sign_before(hi). A Newton guess in doubles (issue 9)
+        // only chooses where to look: each probe is an exact sign that narrows the bracket, so
+        // the answer is the bisection's whatever the guess.
+        if (hi - lo > 2) {
+          std::int64_t k = newton_guess(lo, hi);
+          if (k > lo && k < hi) (sign_before(k, d) == s_lo ? lo : hi) = k;
+          if (k + 1 > lo && k + 1 < hi) (sign_before(k + 1, d) == s_lo ? lo : hi) = k + 1;
+        }
         while (hi - lo > 1) {
           std::int64_t mid = lo + (hi - lo) / 2;
           (sign_before(mid, d) == s_lo ? lo : hi) = mid;
@@ -100,6 +137,46 @@ class Filter {
   }
 
  private:
+  // An approximate lattice index of the root of p in the monotone range [lo, hi] (a few Newton
+  // steps from the midpoint in doubles), clamped to [lo, hi − 1]; its accuracy does not matter.
+  std::int64_t newton_guess(std::int64_t lo, std::int64_t hi) const {
+    const double a = double(lo) * inv_scale_, b = double(hi) * inv_scale_;
+    double x = 0.5 * (a + b);
+    for (int it = 0; it < 8; ++it) {
+      double y = c_[n_], dy = 0;
+      for (int i = n_ - 1; i >= 0; --i) {
+        dy = dy * x + y;
+        y = y * x + c_[i];
+      }
+      if (!(dy != 0) || !std::isfinite(y / dy)) break;
+      double nx = std::clamp(x - y / dy, a, b);
+      if (nx == x) break;
+      x = nx;
+    }
+    double k = std::floor(x / inv_scale_);
+    if (!(k >= double(lo))) return lo;
+    if (!(k < double(hi))) return hi - 1;
+    return std::clamp(static_cast<std::int64_t>(k), lo, hi - 1);
+  }
+
+  // floor(R·2^bits) + 1 for R ≥ 2·max_i |c_{n−i}/c_n|^{1/i} > |every root| (Fujiwara), or nothing
+  // when it does not fit. The coefficients are within one ulp of the exact ones and pow, sqrt and
+  // cbrt within a few ulps, so the factor 1 + 2^−20 covers every rounding.
+  std::optional<std::int64_t> root_bound_index() const {
+    if (n_ < 1 || c_[n_] == 0) return std::nullopt;
+    const double lead = std::fabs(c_[n_]);
+    double m = 0;
+    for (int i = 1; i <= n_; ++i) {
+      double q = std::fabs(c_[n_ - i]) / lead;
+      if (q == 0) continue;
+      double root = i == 1 ? q : i == 2 ? std::sqrt(q) : i == 3 ? std::cbrt(q) : std::pow(q, 1.0 / i);
+      m = std::max(m, root);
+    }
+    double k = std::floor(2 * m * (1 + 0x1p-20) / inv_scale_) + 1;  // ·2^bits, exact scaling
+    if (!(k < 0x1p61)) return std::nullopt;  // also NaN / ∞
+    return static_cast<std::int64_t>(k);
+  }
+
   // sign_before(kδ) where p' has sign d around kδ: sign p(kδ), or −d at a root.
   int sign_before(std::int64_t k, int d) const {
     int s = sign_at(k);
@@ -107,27 +184,14 @@ class Filter {
   }
   // The exact sign of p(kδ): a double evaluation with filtered_sign_at's bound, else exact.
   int sign_at(std::int64_t k) const {
-    int n = p_.degree();
-    if (k > -(std::int64_t{1} << 53) && k < (std::int64_t{1} << 53)) {
-      double x = double(k) * inv_scale_;  // exact
-      double ax = std::fabs(x);
-      double y = approx_.c.back(), bound = std::fabs(approx_.c.back());
-      for (int i = n - 1; i >= 0; --i) {
-        y = y * x + approx_.c[static_cast<std::size_t>(i)];
-        bound = bound * ax + std::fabs(approx_.c[static_cast<std::size_t>(i)]);
-      }
-      double err = (2.0 * n + 2.0) * std::ldexp(bound, -51);  // as in filtered_sign_at (polynomial.cpp)
-      if (std::isfinite(y) && std::isfinite(bound) && bound >= std::ldexp(1.0, -900)) {
-        if (y > err) return 1;
-        if (y < -err) return -1;
-      }
-    }
-    return p_.sign_at(Integer(k), bits_);
+    if (int s = double_sign_at(c_, n_, k, inv_scale_); s != 0) return s;
+    return exact_(k);
   }
 
-  const Polynomial& p_;
-  const DoubleCoefficients& approx_;
-  int bits_, n_;
+  const double* c_;
+  bool usable_;
+  ExactSign exact_;
+  int n_;
   double inv_scale_;  // 2^−bits
   Coefficients coeff_{}, deriv_{};
 };
@@ -142,7 +206,31 @@ FailureFilterResult filtered_next_failure(const Polynomial& p, const DoubleCoeff
   constexpr std::int64_t kLimit = std::int64_t{1} << 62;
   KMR_CHECK(a > -kLimit && a < kLimit && b > -kLimit && b < kLimit, "filtered_next_failure: lattice indices beyond 2^62");
   KMR_CHECK(!approx.usable || approx.c.size() == p.coefficients().size(), "filtered_next_failure: approx is not from p");
-  return Filter(p, approx, bits).run(a, b);
+  auto exact = [&p, bits](std::int64_t k) { return p.sign_at(Integer(k), bits); };
+  return Filter<decltype(exact)>(approx.c.data(), p.degree(), approx.usable, bits, exact).run(a, b);
+}
+
+namespace {
+void check_query(int bits, std::int64_t a, std::int64_t b) {
+  KMR_CHECK(bits >= 0 && bits <= 62, "filtered_next_failure: lattice bits must be in [0, 62]");
+  constexpr std::int64_t kLimit = std::int64_t{1} << 62;
+  KMR_CHECK(a > -kLimit && a < kLimit && b > -kLimit && b < kLimit, "filtered_next_failure: lattice indices beyond 2^62");
+}
+}  // namespace
+
+FailureFilterResult filtered_next_failure(const MachinePolynomial& p, int bits, std::int64_t a, std::int64_t b) {
+  KMR_CHECK(!p.is_zero(), "filtered_next_failure of the zero polynomial");
+  check_query(bits, a, b);
+  const auto approx = p.approximations();  // round to nearest: within the one-ulp allowance
+  auto exact = [&p, bits](std::int64_t k) { return p.to_polynomial().sign_at(Integer(k), bits); };
+  return Filter<decltype(exact)>(approx.data(), p.degree(), true, bits, exact).run(a, b);
+}
+
+int sign_before_lattice(const MachinePolynomial& p, std::int64_t k, int bits) {
+  KMR_CHECK(!p.is_zero(), "sign_before of the zero polynomial");
+  const auto approx = p.approximations();
+  if (int s = double_sign_at(approx.data(), p.degree(), k, std::ldexp(1.0, -bits)); s != 0) return s;
+  return sign_before(p.to_polynomial(), Dyadic(Integer(k), -bits));
 }
 
 }  // namespace kmr::poly

@@ -16,9 +16,11 @@
 //    neither test decides (a double root, roots closer than δ, or a bound too wide) makes the
 //    whole query undecided: the caller runs the exact path.
 //  * No GMP number is created unless a lattice sign falls back to exact arithmetic.
+//  * The MachinePolynomial overloads decide exactly as the Polynomial ones on p.to_polynomial().
 #include <cstdint>
 #include <optional>
 
+#include "poly/machine_polynomial.hpp"
 #include "poly/polynomial.hpp"
 
 namespace kmr::poly {
@@ -32,5 +34,14 @@ struct FailureFilterResult {
 // ContractError otherwise (approx: its size only). a ≥ b answers decided, no failure.
 FailureFilterResult filtered_next_failure(const Polynomial& p, const DoubleCoefficients& approx, int bits,
                                           std::int64_t a, std::int64_t b);
+
+// The same filter for a machine polynomial (its coefficients rounded to nearest); the exact sign
+// fallback converts it to a Polynomial. Answers what filtered_next_failure(p.to_polynomial(), …)
+// would be allowed to answer: nothing, or LatticeRootSolver's answer.
+FailureFilterResult filtered_next_failure(const MachinePolynomial& p, int bits, std::int64_t a, std::int64_t b);
+
+// sign_before(p, kδ) exactly: a double evaluation with filtered_sign_at's bound where p(kδ) ≠ 0
+// is certain, else poly::sign_before on p.to_polynomial() (|k| < 2^62, 0 ≤ bits ≤ 62).
+int sign_before_lattice(const MachinePolynomial& p, std::int64_t k, int bits);
 
 }  // namespace kmr::poly

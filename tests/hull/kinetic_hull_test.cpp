@@ -17,14 +17,6 @@ namespace {
 using exact::Dyadic;
 using exact::Integer;
 
-MovingPoint linear(long long x, long long y, long long z, long long vx, long long vy, long long vz) {
-  MovingPoint p;
-  p[0] = Polynomial(std::vector<Integer>{x, vx});
-  p[1] = Polynomial(std::vector<Integer>{y, vy});
-  p[2] = Polynomial(std::vector<Integer>{z, vz});
-  return p;
-}
-
 std::vector<MovingPoint> random_motions(int n, std::uint64_t seed, int pos_bits = 10, int vel_bits = 6) {
   std::mt19937_64 rng(seed);
   std::uniform_int_distribution<long long> pos(-(1LL << pos_bits), 1LL << pos_bits), vel(-(1LL << vel_bits), 1LL << vel_bits);
@@ -74,6 +66,60 @@ TEST(KineticHull, C2_2_RandomMotionsMatchStaticAndScratchAfterEveryBatch) {
   }
   std::cout << "batches " << batches << ", events " << events << "\n";
   EXPECT_GT(batches, 20);  // the motions do change the hull
+}
+
+// Issue 9's machine certificates: orient3d and centre tests are translation invariant, so
+// translating every point by an offset gives the same polynomials. With offset 0 every certificate
+// is built in __int128 (machine form); with 2^36 − 2^9 some points are beyond the machine bound
+// (mixed); with 2^45 none has a machine form (GMP throughout). Batches, outcomes, trace and live
+// certificates must be identical.
+TEST(KineticHull, MachineCertificatesEqualTheExactOnes) {
+  const auto base = random_motions(24, 99);
+  struct Run {
+    std::vector<std::vector<kinetic::CertificateId>> batches;
+    std::string signature;
+    std::vector<KineticHull::CertificateKey> keys;
+    std::vector<std::array<int, 3>> facets;
+    long long machine = 0;
+  };
+  auto run = [&](long long offset) {
+    auto shift = [offset](MovingPoint q) {
+      q[0] = q[0] + Polynomial(Integer(offset));
+      return q;
+    };
+    std::vector<MovingPoint> pts;
+    for (const auto& p : base) pts.push_back(shift(p));
+    kinetic::MotionSimulator sim(4, Dyadic(8));
+    KineticHull kh(pts, sim, 7);
+    Run r;
+    while (auto b = sim.next_batch(Dyadic(8))) {
+      kh.update(*b);
+      r.batches.push_back(*b);
+      if (r.batches.size() == 40) {  // an integrated change mid-run: new polynomials of one point
+        kh.change_motion(3, shift(three_quarters(base[3])));
+      }
+    }
+    r.signature = kh.signature();
+    r.keys = kh.certificate_keys();
+    r.facets = kh.facets();
+    r.machine = sim.counters().machine_polynomials;
+    return r;
+  };
+  const Run a = run(0), mixed = run((1LL << 36) - (1LL << 9)), big = run(1LL << 45);
+  EXPECT_GT(a.batches.size(), 50u);
+  EXPECT_GT(a.machine, 1000);
+  EXPECT_GT(mixed.machine, 0);
+  EXPECT_LT(mixed.machine, a.machine);
+  EXPECT_EQ(big.machine, 0);
+  for (const Run* r : {&mixed, &big}) {
+    EXPECT_TRUE(r->batches == a.batches);
+    EXPECT_TRUE(r->signature == a.signature);
+    EXPECT_TRUE(r->keys == a.keys);
+    EXPECT_TRUE(r->facets == a.facets);
+  }
+  // The machine form itself: at the bound and beyond it.
+  EXPECT_TRUE(machine_point(linear((1LL << 36) - 1, 0, 0, -(1LL << 36) + 1, 0, 0)).has_value());
+  EXPECT_FALSE(machine_point(linear(1LL << 36, 0, 0, 0, 0, 0)).has_value());
 }
 
 TEST(KineticHull, StartsCoplanar) {

@@ -3,6 +3,7 @@
 // crossings: every outcome, every scheduled failure and every batch must be the same.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <random>
 
 #include "kinetic/kinetic_sort.hpp"
@@ -188,11 +189,19 @@ TEST(FailureFilterPath, A2_1_CertificatesCreatedAtNowGiveTheSameBatchesOnAllThre
   const std::int64_t H = 3000;
   Dyadic horizon(Integer(H), -b);
   MotionSimulator fil(b, horizon), stu(b, horizon, SimulatorOptions{true, false}), ex(b, horizon, SimulatorOptions{false});
+  MotionSimulator mac(b, horizon);  // the same certificates given as MachinePolynomials (issue 9)
   std::vector<CertificateId> live;
+  std::map<CertificateId, Polynomial> polys;
   auto add = [&](const Polynomial& p) {
-    CertificateId i = fil.add(p), j = stu.add(p), k = ex.add(p);
+    kmr::poly::MachinePolynomial m;
+    for (int d = p.degree(); d >= 0; --d) m = m * kmr::poly::MachinePolynomial::linear(0, 1) + kmr::poly::MachinePolynomial(static_cast<long long>(p[d]));
+    ASSERT_EQ(m.to_polynomial(), p);
+    CertificateId i = fil.add(p), j = stu.add(p), k = ex.add(p), l = mac.add(m);
     ASSERT_EQ(i, j);
     ASSERT_EQ(i, k);
+    ASSERT_EQ(i, l);
+    EXPECT_EQ(mac.outcome(i), ex.outcome(i)) << p.to_string() << " at " << ex.now().to_decimal();
+    polys[i] = p;
     EXPECT_EQ(fil.outcome(i), ex.outcome(i)) << p.to_string() << " at " << ex.now().to_decimal();
     EXPECT_EQ(stu.outcome(i), ex.outcome(i)) << p.to_string();
     live.push_back(i);
@@ -216,24 +225,37 @@ TEST(FailureFilterPath, A2_1_CertificatesCreatedAtNowGiveTheSameBatchesOnAllThre
   for (int i = 0; i < 40; ++i) spawn(0);
   long long batches = 0;
   for (;;) {
-    auto x = fil.next_batch(horizon), y = stu.next_batch(horizon), z = ex.next_batch(horizon);
+    auto x = fil.next_batch(horizon), y = stu.next_batch(horizon), z = ex.next_batch(horizon), w = mac.next_batch(horizon);
     ASSERT_EQ(x.has_value(), z.has_value());
     ASSERT_EQ(y.has_value(), z.has_value());
+    ASSERT_EQ(w.has_value(), z.has_value());
     if (!z) break;
     ASSERT_EQ(*x, *z) << "batch " << batches;
     ASSERT_EQ(*y, *z) << "batch " << batches;
+    ASSERT_EQ(*w, *z) << "batch " << batches;
     ASSERT_EQ(fil.now(), ex.now());
+    ASSERT_EQ(mac.now(), ex.now());
     for (CertificateId id : *z) EXPECT_EQ(fil.outcome(id), ex.outcome(id));
+    for (CertificateId id : *z) EXPECT_EQ(mac.outcome(id), ex.outcome(id));
+    if (batches % 10 == 0)  // the view of a machine record: its exact polynomial and scheduled failure
+      for (CertificateId id : live) {
+        const auto& v = mac.certificate(id);
+        EXPECT_EQ(v.polynomial, polys[id]);
+        EXPECT_EQ(v.failure, ex.certificate(id).failure) << polys[id].to_string();
+        EXPECT_EQ(v.outcome, ex.outcome(id));
+      }
     ++batches;
     std::int64_t now_k = *fil.now_index();
     for (int j = 0; j < 3; ++j) spawn(now_k);
     if (live.size() > 60) {
       std::size_t at = static_cast<std::size_t>(uniform(0, static_cast<std::int64_t>(live.size()) - 1));
-      fil.remove(live[at]), stu.remove(live[at]), ex.remove(live[at]);
+      fil.remove(live[at]), stu.remove(live[at]), ex.remove(live[at]), mac.remove(live[at]);
       live.erase(live.begin() + static_cast<std::ptrdiff_t>(at));
     }
   }
   for (CertificateId id : live) EXPECT_EQ(fil.outcome(id), ex.outcome(id));
+  for (CertificateId id : live) EXPECT_EQ(mac.outcome(id), ex.outcome(id));
+  EXPECT_GT(mac.counters().machine_polynomials, 100);
   EXPECT_GT(batches, 50);
   EXPECT_GT(fil.counters().poly_filter_decided, 0);
   EXPECT_GT(fil.counters().poly_filter_fallbacks, 0);

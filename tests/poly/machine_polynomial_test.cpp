@@ -1,0 +1,139 @@
+// MachinePolynomial (poly/machine_polynomial.hpp) against Polynomial, which shares no arithmetic
+// with it: the same operations give the same polynomial or are refused (never a wrapped value);
+// its failure filter and lattice signs decide as the exact path on the converted Polynomial.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "exact/error.hpp"
+#include "poly/failure_filter.hpp"
+#include "poly/machine_polynomial.hpp"
+#include "poly/sturm.hpp"
+
+namespace kmr::poly {
+namespace {
+
+using M = MachinePolynomial;
+
+// A random value of up to `bits` bits, as __int128 and as Integer (built independently: decimal text).
+__int128 random_value(std::mt19937_64& rng, int bits) {
+  unsigned __int128 u = (static_cast<unsigned __int128>(rng()) << 64) | rng();
+  int b = static_cast<int>(rng() % static_cast<unsigned>(bits + 1));
+  __int128 v = b == 0 ? 0 : static_cast<__int128>(u >> (128 - b));  // 0 ≤ v < 2^b ≤ 2^126
+  return rng() % 2 ? -v : v;
+}
+Integer reference(__int128 v) {
+  bool neg = v < 0;
+  unsigned __int128 m = neg ? -static_cast<unsigned __int128>(v) : static_cast<unsigned __int128>(v);
+  std::string digits;
+  do {
+    digits.insert(digits.begin(), static_cast<char>('0' + static_cast<int>(m % 10)));
+    m /= 10;
+  } while (m);
+  return Integer((neg ? "-" : "") + digits);
+}
+Polynomial reference(const std::vector<__int128>& c) {
+  std::vector<Integer> v;
+  for (__int128 x : c) v.push_back(reference(x));
+  return Polynomial(v);
+}
+M machine(const std::vector<__int128>& c) {
+  M p;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    M term(c[i]);
+    for (std::size_t k = 0; k < i; ++k) term = term * M::linear(0, 1);
+    p = p + term;
+  }
+  return p;
+}
+
+TEST(MachinePolynomial, ToIntegerAtTheExtremes) {
+  const __int128 max = static_cast<__int128>((static_cast<unsigned __int128>(1) << 127) - 1);
+  EXPECT_EQ(to_integer(max), (Integer(1) << 127) - 1);
+  EXPECT_EQ(to_integer(-max - 1), -(Integer(1) << 127));
+  EXPECT_EQ(to_integer(0), Integer(0));
+  EXPECT_EQ(to_integer(-1), Integer(-1));
+  EXPECT_EQ(to_integer(static_cast<__int128>(1) << 64), Integer(1) << 64);
+  std::mt19937_64 rng(1);
+  for (int i = 0; i < 2000; ++i) {
+    __int128 v = random_value(rng, 126);
+    ASSERT_EQ(to_integer(v), reference(v));
+  }
+}
+
+TEST(MachinePolynomial, ArithmeticIsPolynomialArithmetic) {
+  std::mt19937_64 rng(2);
+  for (int i = 0; i < 3000; ++i) {
+    const int bits = 1 + static_cast<int>(rng() % 40);  // triple products stay below 2^123
+    auto coeffs = [&](std::size_t n) {
+      std::vector<__int128> c;
+      for (std::size_t k = 0; k < n; ++k) c.push_back(random_value(rng, bits));
+      return c;
+    };
+    auto a = coeffs(1 + rng() % 2), b = coeffs(1 + rng() % 2);  // degree ≤ 1: products of degree ≤ 2
+    M ma = machine(a), mb = machine(b);
+    Polynomial pa = reference(a), pb = reference(b);
+    ASSERT_EQ(ma.to_polynomial(), pa);
+    ASSERT_EQ((ma + mb).to_polynomial(), pa + pb);
+    ASSERT_EQ((ma - mb).to_polynomial(), pa - pb);
+    ASSERT_EQ((ma * mb).to_polynomial(), pa * pb);
+    auto c = coeffs(2);
+    ASSERT_EQ((ma * mb * machine(c)).to_polynomial(), pa * pb * reference(c));
+    ASSERT_EQ((ma - ma).is_zero(), true);
+    ASSERT_EQ((ma - ma).degree(), -1);
+    std::vector<__int128> wide{random_value(rng, 125), random_value(rng, 125)}, wide2{random_value(rng, 125)};
+    ASSERT_EQ((machine(wide) + machine(wide2)).to_polynomial(), reference(wide) + reference(wide2));
+    ASSERT_EQ((machine(wide) - machine(wide2)).to_polynomial(), reference(wide) - reference(wide2));
+  }
+}
+
+TEST(MachinePolynomial, OverflowAndHighDegreeAreRefused) {
+  const M big(static_cast<__int128>(1) << 100);
+  EXPECT_THROW(big * big, ContractError);
+  const __int128 max = static_cast<__int128>((static_cast<unsigned __int128>(1) << 127) - 1);
+  EXPECT_THROW(M(max) + M(1), ContractError);
+  EXPECT_THROW(M(-max) - M(2), ContractError);
+  const M t = M::linear(0, 1);
+  EXPECT_THROW(t * t * t * t, ContractError);
+  EXPECT_NO_THROW(t * t * t);
+  // Just inside: 2^63 · 2^63 = 2^126 fits.
+  EXPECT_EQ((M(static_cast<__int128>(1) << 63) * M(static_cast<__int128>(1) << 63)).to_polynomial(), Polynomial(Integer(1) << 126));
+}
+
+TEST(MachinePolynomial, FilterAndSignsDecideAsTheExactPath) {
+  std::mt19937_64 rng(3);
+  long long decided = 0, undecided = 0;
+  for (int i = 0; i < 1500; ++i) {
+    const int bits = static_cast<int>(rng() % 12);
+    M p;
+    Polynomial P;
+    if (i % 3 == 0) {  // roots on lattice points and double roots: (4t − q1)(4t − q2)(4t − q3)·s
+      std::uniform_int_distribution<long long> q(-40, 40);
+      long long q1 = q(rng), q2 = rng() % 3 ? q(rng) : q1, q3 = q(rng);
+      p = M::linear(-q1, 4) * M::linear(-q2, 4) * M::linear(-q3, 4) * M(rng() % 2 ? 1 : -(static_cast<__int128>(1) << 60));
+    } else {
+      std::vector<__int128> c;
+      for (int k = 0; k < 4; ++k) c.push_back(random_value(rng, 40 + static_cast<int>(rng() % 80)));
+      p = machine(c);
+    }
+    if (p.is_zero()) continue;
+    P = p.to_polynomial();
+    const std::int64_t a = static_cast<std::int64_t>(rng() % 4096) - 2048;
+    const std::int64_t b = a + static_cast<std::int64_t>(rng() % (std::int64_t{1} << (4 + rng() % 34)));
+    FailureFilterResult f = filtered_next_failure(p, bits, a, b);
+    if (f.decided) {
+      ++decided;
+      LatticeRootSolver exact(P, bits);
+      std::optional<Integer> e = exact.next_failure_after(Dyadic(Integer(a), -bits), Dyadic(Integer(b), -bits));
+      ASSERT_EQ(f.failure.has_value(), e.has_value()) << P.to_string() << " bits " << bits;
+      if (e) ASSERT_EQ(Integer(*f.failure), *e) << P.to_string() << " bits " << bits;
+    } else {
+      ++undecided;
+    }
+    for (std::int64_t k : {a, b, a + (b - a) / 2}) ASSERT_EQ(sign_before_lattice(p, k, bits), sign_before(P, Dyadic(Integer(k), -bits)));
+  }
+  EXPECT_GT(decided, 10 * undecided) << decided << " decided, " << undecided << " undecided";
+}
+
+}  // namespace
+}  // namespace kmr::poly
