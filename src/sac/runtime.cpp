@@ -51,8 +51,7 @@ Runtime::~Runtime() {
       if (ModBase* m = static_cast<MemoNode*>(n)->owned()) m->descriptor().destroy(m);
     }
     if (n->kind == Kind::MemoRead) {
-      ModBase* m = static_cast<MemoReadNode*>(static_cast<ReadNode*>(n))->dest;
-      m->descriptor().destroy(m);
+      if (ModBase* m = static_cast<MemoReadNode*>(static_cast<ReadNode*>(n))->dest) m->descriptor().destroy(m);
     }
     destroy_node(n);
     s = nx;
@@ -302,7 +301,7 @@ void Runtime::rerun(ReadNode* r) {
   MemoReadNode* open = nullptr;
   if (r->kind == Kind::MemoRead) {  // its inline write belongs to the execution being replaced
     open = static_cast<MemoReadNode*>(r);
-    if (open->dest->writer == r) {
+    if (open->dest && open->dest->writer == r) {
       open->dest->writer = nullptr;
       unwritten_.push_back(open->dest);  // checked at the end of propagate(), as for a discarded write
     }
@@ -359,9 +358,11 @@ void Runtime::kill(Node* n) {
       unlink_reader(r);
       if (r->heap >= 0) heap_erase(r);
       unindex(r);
-      if (r->dest->writer == r) r->dest->writer = nullptr;
-      r->dest->dead = true;
-      dead_.push_back(r->dest);
+      if (ModBase* d = r->dest) {
+        if (d->writer == r) d->writer = nullptr;
+        d->dead = true;
+        dead_.push_back(d);
+      }
       break;
     }
     case Kind::MemoStart: {
@@ -489,11 +490,13 @@ std::string Runtime::signature() const {
         out += m->label->name;
         out += ':';
         put_hex(out, m->hash);
-        out += '=';
-        put_hex(out, m->dest->name);
+        if (m->dest) {
+          out += '=';
+          put_hex(out, m->dest->name);
+        }
         out += " R";
         put_hex(out, m->mod->name);
-        if (m->dest->writer == n) {
+        if (m->dest && m->dest->writer == n) {
           out += " W";
           put_hex(out, m->dest->name);
           out += '=';

@@ -238,7 +238,7 @@ struct MemoNode : KeyedNode {  // MemoImpl holds the key and result
 struct MemoReadNode : ReadNode, KeyLink {
   static constexpr Kind kKind = Kind::MemoRead;
   const Label* label = nullptr;
-  ModBase* dest = nullptr;  // the memo_box destination, freed with this node's trace
+  ModBase* dest = nullptr;  // the memo_box destination, freed with this node's trace (null: memo_read<void>)
   MemoReadNode() : ReadNode(Kind::MemoRead) {}
 };
 
@@ -481,7 +481,7 @@ class Runtime {
   void write(Mod<T>* m, T value) {
     inside("write");
     Node* w;
-    if (open_ && m == open_->dest) {  // memo_read's destination, written by its own closure: inline
+    if (open_ && m == open_->dest) {  // (never for memo_read<void>: dest is null)  // memo_read's destination, written by its own closure: inline
       if (m->writer == open_) fail("modifiable " + hex(m->name) + " written twice in one execution");
       w = open_;
     } else {
@@ -713,8 +713,11 @@ class Runtime {
   // but in one trace node: call, destination, read and the destination's write by k share one
   // stamp and one end (issue 8 §2). k(v, dest) is re-run when src changes; it writes dest at most
   // once directly (a write of dest inside a nested read or memo call is an ordinary write).
+  // memo_read<void>(label, key, src, k): the same for `memo<Unit>(label, key, [=]{ read(src, k); ...})`
+  // (a memoized call whose body is one read, with no destination): k(v) only.
   template <class T, class Key, class U, class F>
-  Mod<T>* memo_read(const Label& label, const Key& key, Mod<U>* src, F&& k) {
+  std::conditional_t<std::is_void_v<T>, void, Mod<T>*> memo_read(const Label& label, const Key& key, Mod<U>* src,
+                                                                   F&& k) {
     inside("memo");
     using M = MemoReadImpl<Key, T, U, std::decay_t<F>>;
     std::uint64_t h = mix(label.hash, canon_key(key));
@@ -725,7 +728,8 @@ class Runtime {
         discard(now_, m);
         propagate_until(m->end);
         now_ = m->end;
-        return static_cast<Mod<T>*>(m->dest);
+        if constexpr (!std::is_void_v<T>) return static_cast<Mod<T>*>(m->dest);
+        else return;
       }
     }
     ++stats_.memo_misses;
@@ -734,19 +738,21 @@ class Runtime {
     append(m);
     m->hash = h;
     m->label = &label;
-    auto* dest = make_mod<Mod<T>>();
-    dest->name = mix(h, 0xde57);  // as memo_box names it
-    ++live_owned_;
-    m->dest = dest;
+    if constexpr (!std::is_void_v<T>) {
+      auto* dest = make_mod<Mod<T>>();
+      dest->name = mix(h, 0xde57);  // as memo_box names it
+      ++live_owned_;
+      m->dest = dest;
+    }
     m->mod = src;
     link_reader(m, &src->readers);
     {
       FreshScope fs(*this, read_scope(src), m);
-      m->k(static_cast<const U&>(src->value), dest);
+      m->M::rerun();
     }
     m->end = append(make_node<EndNode>());
     index(m, anchor);
-    return dest;
+    if constexpr (!std::is_void_v<T>) return static_cast<Mod<T>*>(m->dest);
   }
   // Undo hook: f runs when this point of the trace is discarded (not on ~Runtime). f may take its
   // own HookId: the identity of this registration, distinct from every other hook's, so an owner
@@ -804,7 +810,11 @@ class Runtime {
     static constexpr char desc = 0;  // its address is the tag
     template <class G>
     MemoReadImpl(const Key& key_, G&& g) : key(key_), k(std::forward<G>(g)) { tag = &desc; }
-    void rerun() override { k(static_cast<const U&>(static_cast<Mod<U>*>(mod)->value), static_cast<Mod<T>*>(dest)); }
+    void rerun() override {
+      const U& v = static_cast<Mod<U>*>(mod)->value;
+      if constexpr (std::is_void_v<T>) k(v);
+      else k(v, static_cast<Mod<T>*>(dest));
+    }
   };
   template <class T, class F>
   struct IReadImpl : IReadNode {
