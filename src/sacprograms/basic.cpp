@@ -3,7 +3,9 @@
 
 namespace kmr::sacprograms {
 
-long long map_fn(long long x) { return 3 * x + 1; }
+// 3x + 1 modulo 2^64 (unsigned arithmetic: defined for every input, no signed overflow; the static
+// twin and the references call this same function).
+long long map_fn(long long x) { return static_cast<long long>(3ULL * static_cast<unsigned long long>(x) + 1ULL); }
 bool keep_fn(long long x) { return (x & 3) != 0; }
 
 namespace {
