@@ -129,6 +129,10 @@ std::uint16_t register_mod_type(const ModType* t) {
 // ---- errors -----------------------------------------------------------------------------------
 void Runtime::fail(const std::string& what) { throw ContractError("sac: " + what); }
 
+void Runtime::fail_written_twice(const ModBase* m) {
+  fail("modifiable " + hex(m->name) + " written twice in one execution");
+}
+
 void Runtime::outside(const char* op) const {
   if (running_) fail(std::string(op) + " during a run or change propagation");
 }
@@ -311,6 +315,17 @@ void Runtime::rerun(ReadNode* r) {
     r->rerun();
   }
   discard(now_, r->end);  // what was not reused inside r's interval
+}
+
+void Runtime::first_run(MemoReadNode* m, ModBase* src, ModBase* anchor) {
+  m->mod = src;
+  link_reader(m, &src->readers);
+  {
+    FreshScope fs(*this, read_scope(src), m);
+    m->rerun();
+  }
+  m->end = append(make_node<EndNode>());
+  index(m, anchor);
 }
 
 void Runtime::propagate_until(const Stamp* end) {

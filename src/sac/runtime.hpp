@@ -482,7 +482,7 @@ class Runtime {
     inside("write");
     Node* w;
     if (open_ && m == open_->dest) {  // (never for memo_read<void>: dest is null)  // memo_read's destination, written by its own closure: inline
-      if (m->writer == open_) fail("modifiable " + hex(m->name) + " written twice in one execution");
+      if (m->writer == open_) fail_written_twice(m);
       w = open_;
     } else {
       if (check_writable(m)) {  // the write moved earlier: the later one must go before propagate ends
@@ -723,11 +723,7 @@ class Runtime {
     std::uint64_t h = mix(label.hash, canon_key(key));
     ModBase* anchor = anchor_of(key);
     if (finger_) {
-      if (M* m = find_memo<M>(h, label, key, anchor)) {
-        ++stats_.memo_hits;
-        discard(now_, m);
-        propagate_until(m->end);
-        now_ = m->end;
+      if (M* m = reuse_memo<M>(h, label, key, anchor)) {
         if constexpr (!std::is_void_v<T>) return static_cast<Mod<T>*>(m->dest);
         else return;
       }
@@ -744,14 +740,7 @@ class Runtime {
       ++live_owned_;
       m->dest = dest;
     }
-    m->mod = src;
-    link_reader(m, &src->readers);
-    {
-      FreshScope fs(*this, read_scope(src), m);
-      m->M::rerun();
-    }
-    m->end = append(make_node<EndNode>());
-    index(m, anchor);
+    first_run(m, src, anchor);
     if constexpr (!std::is_void_v<T>) return static_cast<Mod<T>*>(m->dest);
   }
   // Undo hook: f runs when this point of the trace is discarded (not on ~Runtime). f may take its
@@ -997,6 +986,25 @@ class Runtime {
     }
     return best;
   }
+
+  // The memo (or memo-read) node to reuse, with the trace before it discarded and the affected reads
+  // inside it propagated; null if none. Out of line: re-execution only (keeps the recursive path's
+  // native frames small).
+  template <class M, class Key>
+  [[gnu::noinline]] M* reuse_memo(std::uint64_t h, const Label& label, const Key& key, const ModBase* anchor) {
+    M* m = find_memo<M>(h, label, key, anchor);
+    if (!m) return nullptr;
+    ++stats_.memo_hits;
+    discard(now_, m);
+    propagate_until(m->end);
+    now_ = m->end;
+    return m;
+  }
+  [[noreturn, gnu::noinline, gnu::cold]] static void fail_written_twice(const ModBase* m);
+  // A new memo-read node's first execution: registers the read, runs its closure, ends and indexes
+  // it. Out of line and not a template, so that each level of a program's recursion through
+  // memo_read adds one small fixed frame (native stack is touched memory too).
+  void first_run(MemoReadNode* m, ModBase* src, ModBase* anchor);
 
   void rerun(ReadNode* r);
   void propagate_until(const Stamp* end);  // processes queued reads that start before end
