@@ -165,7 +165,7 @@ bool Runtime::check_writable(const ModBase* m) const {
   if (m->dead) fail("write to a discarded modifiable " + hex(m->name));
   if (!m->writer || in_window(m->writer)) return false;
   // (An inline write is its memo_read node's, at or before now: a second write.)
-  if (finger_ && !OrderList::before(m->writer, finger_) && m->writer->kind == Kind::Write) return true;
+  if (finger_ && !OrderList::before(m->writer, finger_) && !m->inline_write) return true;
   fail("modifiable " + hex(m->name) + " written twice in one execution");
 }
 
@@ -305,7 +305,7 @@ void Runtime::rerun(ReadNode* r) {
   MemoReadNode* open = nullptr;
   if (r->kind == Kind::MemoRead) {  // its inline write belongs to the execution being replaced
     open = static_cast<MemoReadNode*>(r);
-    if (open->dest && open->dest->writer == r) {
+    if (open->dest && open->dest->inline_write && open->dest->writer) {
       open->dest->writer = nullptr;
       unwritten_.push_back(open->dest);  // checked at the end of propagate(), as for a discarded write
     }
@@ -374,7 +374,7 @@ void Runtime::kill(Node* n) {
       if (r->heap >= 0) heap_erase(r);
       unindex(r);
       if (ModBase* d = r->dest) {
-        if (d->writer == r) d->writer = nullptr;
+        if (d->inline_write) d->writer = nullptr;
         d->dead = true;
         dead_.push_back(d);
       }
@@ -401,7 +401,7 @@ void Runtime::kill(Node* n) {
     case Kind::Write: {
       auto* w = static_cast<WriteNode*>(n);
       if (w->flag) --stale_writes_;
-      if (w->mod->writer == w) {
+      if (!w->mod->inline_write && w->mod->writer == w) {
         w->mod->writer = nullptr;
         if (finger_) unwritten_.push_back(w->mod);  // in re-execution: checked at the end of propagate()
       }
@@ -511,7 +511,7 @@ std::string Runtime::signature() const {
         }
         out += " R";
         put_hex(out, m->mod->name);
-        if (m->dest && m->dest->writer == n) {
+        if (m->dest && m->dest->inline_write && m->dest->writer) {
           out += " W";
           put_hex(out, m->dest->name);
           out += '=';

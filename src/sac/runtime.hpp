@@ -234,7 +234,8 @@ struct MemoNode : KeyedNode {  // MemoImpl holds the key and result
 // A memo_box call whose body is one read (Runtime::memo_read; issue 8 §2, CEAL's one node per basic
 // block): the call, its destination, the read and the destination's write share one node, one
 // stamp and one end. It is a read (reader lists, the queue, rerun) with a key-index entry; the
-// write of `dest` by its own closure is recorded inline: dest->writer == this node.
+// write of `dest` by its own closure is recorded inline (dest->inline_write; dest->writer is the
+// stamp the write follows, a top-level node of this interval, so it lives as long as this execution).
 struct MemoReadNode : ReadNode, KeyLink {
   static constexpr Kind kKind = Kind::MemoRead;
   const Label* label = nullptr;
@@ -308,13 +309,14 @@ struct ModTypeOf {
 struct ModBase {
   std::uint64_t name = 0;       // canonical: allocation key, or the input's name
   ReadNode* readers = nullptr;  // intrusive list of live reads
-  Node* writer = nullptr;       // the write of the current execution: a WriteNode, or the MemoReadNode owning it (inline)
+  Node* writer = nullptr;       // the write of the current execution: its WriteNode, or (inline_write) the stamp it follows
   Node* keyed = nullptr;        // memo/alloc nodes whose key's first modifiable is this one
   bool input = false;
   bool written = false;
   bool dead = false;
   bool imperative = false;      // an IMod
   bool external = false;        // a traceable allocated in a run: set by its owner between runs
+  bool inline_write = false;    // a memo_read destination written by its node's closure (no WriteNode)
   std::uint16_t type = 0;       // index of its ModType (set by the runtime at allocation)
   const ModType& descriptor() const { return *detail::mod_type(type); }
   std::uint64_t value_hash() const { return descriptor().value_hash(this); }  // of the current value (signature)
@@ -481,15 +483,19 @@ class Runtime {
   void write(Mod<T>* m, T value) {
     inside("write");
     Node* w;
-    if (open_ && m == open_->dest) {  // (never for memo_read<void>: dest is null)  // memo_read's destination, written by its own closure: inline
-      if (m->writer == open_) fail_written_twice(m);
-      w = open_;
+    if (open_ && m == open_->dest) {  // memo_read's destination, written by its own closure (never for memo_read<void>)
+      // Recorded inline: the writer is the stamp the write follows (now), so reads are checked
+      // against the write's exact time. A writer outside the window is this execution's.
+      if (m->writer && !in_window(m->writer)) fail_written_twice(m);
+      m->inline_write = true;
+      w = static_cast<Node*>(now_);
     } else {
       if (check_writable(m)) {  // the write moved earlier: the later one must go before propagate ends
         m->writer->flag = true;
         ++stale_writes_;
         ++stats_.writes_moved_earlier;
       }
+      m->inline_write = false;
       auto* wn = make_node<WriteNode>();
       append(wn);
       wn->mod = m;

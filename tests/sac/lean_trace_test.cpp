@@ -154,6 +154,25 @@ TEST(SacLeanTrace, MisuseReadingTheDestinationBeforeItsWriteInReexecution) {
   EXPECT_NE(error_of([&] { rt.propagate(); }).find("before it was written"), std::string::npos);
 }
 
+// The inline write keeps its exact time: a nested read that re-execution newly makes read the
+// destination before the closure's write is refused, as with a write node.
+TEST(SacLeanTrace, MisuseNestedReadOfTheDestinationBeforeItsInlineWrite) {
+  Runtime rt;
+  auto* x = rt.input<int>(kIn, 1, 5);
+  auto* b = rt.input<int>(kIn, 2, 0);
+  rt.run([&] {
+    rt.memo_read<int>(kMapL, 0, x, [&rt, b](const int& v, Mod<int>* dest) {
+      rt.read(b, [&rt, dest](const int& w) {
+        if (w > 0) rt.read(dest, [](const int&) {});
+      });
+      rt.write(dest, v);
+    });
+    return 0;
+  });
+  rt.change(b, 1);  // only the nested read re-runs; it now reads dest before dest's write
+  EXPECT_NE(error_of([&] { rt.propagate(); }).find("before it was written"), std::string::npos);
+}
+
 TEST(SacLeanTrace, MisuseWritingTheDestinationTwice) {
   Runtime rt;
   auto* x = rt.input<int>(kIn, 1, 0);
