@@ -28,6 +28,10 @@
 //    changes it (rt.change outside runs).
 //  * memo_box(label, key, body): body writes the returned destination, possibly inside reads; the
 //    destination is reused exactly when the call is.
+//  * memo_read(label, key, src, k) behaves as memo_box (memo_read<void>: as memo) whose body is the
+//    one read `read(src, k)`, in one trace node; its closure's own write of the destination is
+//    inline and checked at its exact time (a read before it, a second write, a lost write while
+//    read are errors as for write nodes).
 //  * A write whose modifiable's current write lies after the interval being re-executed moves the
 //    write earlier (CEAL); the later write must be gone when propagate() returns (else ContractError).
 //  * The signature lists every node with names and digests of written values, memo results and
