@@ -50,6 +50,9 @@ Runtime::~Runtime() {
     if (n->kind == Kind::MemoStart) {
       if (ModBase* m = static_cast<MemoNode*>(n)->owned()) m->descriptor().destroy(m);
     }
+    if (n->kind == Kind::MemoRead) {
+      if (ModBase* m = static_cast<MemoReadNode*>(static_cast<ReadNode*>(n))->dest) m->descriptor().destroy(m);
+    }
     destroy_node(n);
     s = nx;
   }
@@ -69,6 +72,7 @@ void* destroy_as(Node* n) {  // T has a virtual destructor; its object starts at
 void* Runtime::destroy_node(Node* n) {
   switch (n->kind) {
     case Kind::ReadStart:
+    case Kind::MemoRead:
       return destroy_as<ReadNode>(n);
     case Kind::MemoStart: {
       auto* m = static_cast<MemoNode*>(n);
@@ -125,6 +129,10 @@ std::uint16_t register_mod_type(const ModType* t) {
 // ---- errors -----------------------------------------------------------------------------------
 void Runtime::fail(const std::string& what) { throw ContractError("sac: " + what); }
 
+void Runtime::fail_written_twice(const ModBase* m) {
+  fail("modifiable " + hex(m->name) + " written twice in one execution");
+}
+
 void Runtime::outside(const char* op) const {
   if (running_) fail(std::string(op) + " during a run or change propagation");
 }
@@ -156,7 +164,8 @@ bool Runtime::check_writable(const ModBase* m) const {
   if (m->external) fail("write to traceable " + hex(m->name) + " inside a run (its owner sets it with change)");
   if (m->dead) fail("write to a discarded modifiable " + hex(m->name));
   if (!m->writer || in_window(m->writer)) return false;
-  if (finger_ && !OrderList::before(m->writer, finger_)) return true;
+  // (An inline write is its memo_read node's, at or before now: a second write.)
+  if (finger_ && !OrderList::before(m->writer, finger_) && !m->inline_write) return true;
   fail("modifiable " + hex(m->name) + " written twice in one execution");
 }
 
@@ -249,53 +258,74 @@ void Runtime::heap_erase(ReadNode* r) {
 }
 
 // ---- key index --------------------------------------------------------------------------------
-void Runtime::index(KeyedNode* n, ModBase* anchor) {
+void Runtime::index(Node* n, ModBase* anchor) {
+  KeyLink* l = key_link(n);
   if (anchor) {
-    n->flag = false;
-    n->hnext = anchor->keyed;
-    if (anchor->keyed) anchor->keyed->hpprev = &n->hnext;
+    set_in_table(n, false);
+    l->hnext = anchor->keyed;
+    if (anchor->keyed) key_link(anchor->keyed)->hpprev = &l->hnext;
     anchor->keyed = n;
-    n->hpprev = &anchor->keyed;
+    l->hpprev = &anchor->keyed;
     return;
   }
   if (indexed_ + 1 > buckets_.size()) {
-    std::vector<KeyedNode*> old(buckets_.size() * 2, nullptr);
+    std::vector<Node*> old(buckets_.size() * 2, nullptr);
     old.swap(buckets_);
     indexed_ = 0;
-    for (KeyedNode* b : old)
-      for (KeyedNode* k = b; k;) {
-        KeyedNode* nx = k->hnext;
+    for (Node* b : old)
+      for (Node* k = b; k;) {
+        Node* nx = key_link(k)->hnext;
         index(k, nullptr);
         k = nx;
       }
   }
-  KeyedNode** b = &buckets_[n->hash & (buckets_.size() - 1)];
-  n->hnext = *b;
-  if (*b) (*b)->hpprev = &n->hnext;
+  Node** b = &buckets_[l->hash & (buckets_.size() - 1)];
+  l->hnext = *b;
+  if (*b) key_link(*b)->hpprev = &l->hnext;
   *b = n;
-  n->hpprev = b;
-  n->flag = true;
+  l->hpprev = b;
+  set_in_table(n, true);
   ++indexed_;
 }
 
-void Runtime::unindex(KeyedNode* n) {
-  if (!n->hpprev) return;
-  *n->hpprev = n->hnext;
-  if (n->hnext) n->hnext->hpprev = n->hpprev;
-  n->hnext = nullptr;
-  n->hpprev = nullptr;
-  if (n->flag) --indexed_;
+void Runtime::unindex(Node* n) {
+  KeyLink* l = key_link(n);
+  if (!l->hpprev) return;
+  *l->hpprev = l->hnext;
+  if (l->hnext) key_link(l->hnext)->hpprev = l->hpprev;
+  l->hnext = nullptr;
+  l->hpprev = nullptr;
+  if (in_table(n)) --indexed_;
 }
 
 // ---- change propagation (§1.3.1) --------------------------------------------------------------
 void Runtime::rerun(ReadNode* r) {
   ++stats_.reads_reexecuted;
   Scope s(*this, r, r->end);
+  MemoReadNode* open = nullptr;
+  if (r->kind == Kind::MemoRead) {  // its inline write belongs to the execution being replaced
+    open = static_cast<MemoReadNode*>(r);
+    if (open->dest && open->dest->inline_write && open->dest->writer) {
+      open->dest->writer = nullptr;
+      unwritten_.push_back(open->dest);  // checked at the end of propagate(), as for a discarded write
+    }
+  }
   {
-    FreshScope fs(*this, read_scope(r->mod));
+    FreshScope fs(*this, read_scope(r->mod), open);
     r->rerun();
   }
   discard(now_, r->end);  // what was not reused inside r's interval
+}
+
+void Runtime::first_run(MemoReadNode* m, ModBase* src, ModBase* anchor) {
+  m->mod = src;
+  link_reader(m, &src->readers);
+  {
+    FreshScope fs(*this, read_scope(src), m);
+    m->rerun();
+  }
+  m->end = append(make_node<EndNode>());
+  index(m, anchor);
 }
 
 void Runtime::propagate_until(const Stamp* end) {
@@ -338,6 +368,18 @@ void Runtime::kill(Node* n) {
       if (r->heap >= 0) heap_erase(r);
       break;
     }
+    case Kind::MemoRead: {
+      auto* r = static_cast<MemoReadNode*>(static_cast<ReadNode*>(n));
+      unlink_reader(r);
+      if (r->heap >= 0) heap_erase(r);
+      unindex(r);
+      if (ModBase* d = r->dest) {
+        if (d->inline_write) d->writer = nullptr;
+        d->dead = true;
+        dead_.push_back(d);
+      }
+      break;
+    }
     case Kind::MemoStart: {
       auto* memo = static_cast<MemoNode*>(n);
       unindex(memo);
@@ -359,7 +401,7 @@ void Runtime::kill(Node* n) {
     case Kind::Write: {
       auto* w = static_cast<WriteNode*>(n);
       if (w->flag) --stale_writes_;
-      if (w->mod->writer == w) {
+      if (!w->mod->inline_write && w->mod->writer == w) {
         w->mod->writer = nullptr;
         if (finger_) unwritten_.push_back(w->mod);  // in re-execution: checked at the end of propagate()
       }
@@ -457,6 +499,26 @@ std::string Runtime::signature() const {
       case Kind::End:
         out += ')';
         break;
+      case Kind::MemoRead: {  // the tokens of the memo_box call, its read and (inline) the write of its destination
+        auto* m = static_cast<const MemoReadNode*>(static_cast<const ReadNode*>(n));
+        out += 'M';
+        out += m->label->name;
+        out += ':';
+        put_hex(out, m->hash);
+        if (m->dest) {
+          out += '=';
+          put_hex(out, m->dest->name);
+        }
+        out += " R";
+        put_hex(out, m->mod->name);
+        if (m->dest && m->dest->inline_write && m->dest->writer) {
+          out += " W";
+          put_hex(out, m->dest->name);
+          out += '=';
+          put_hex(out, m->dest->value_hash());
+        }
+        break;
+      }
       case Kind::MemoStart: {
         auto* m = static_cast<const MemoNode*>(n);
         out += 'M';

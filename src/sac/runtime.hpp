@@ -28,6 +28,10 @@
 //    changes it (rt.change outside runs).
 //  * memo_box(label, key, body): body writes the returned destination, possibly inside reads; the
 //    destination is reused exactly when the call is.
+//  * memo_read(label, key, src, k) behaves as memo_box (memo_read<void>: as memo) whose body is the
+//    one read `read(src, k)`, in one trace node; its closure's own write of the destination is
+//    inline and checked at its exact time (a read before it, a second write, a lost write while
+//    read are errors as for write nodes).
 //  * A write whose modifiable's current write lies after the interval being re-executed moves the
 //    write earlier (CEAL); the later write must be gone when propagate() returns (else ContractError).
 //  * The signature lists every node with names and digests of written values, memo results and
@@ -164,7 +168,7 @@ ModBase* anchor_of(const std::tuple<A...>& t) {
 }
 
 // ---- trace nodes ------------------------------------------------------------------------------
-enum class Kind : std::uint8_t { ReadStart, End, MemoStart, Alloc, Write, IWrite, Hook };
+enum class Kind : std::uint8_t { ReadStart, End, MemoStart, Alloc, Write, IWrite, Hook, MemoRead };
 
 // Node = Stamp with kind, flag and size in the Stamp's tail padding (32 bytes), not polymorphic:
 // only nodes that hold a closure or a typed key/value (read, memo, iwrite, hook) carry a vtable
@@ -190,7 +194,8 @@ struct ReadNode : Node {
   ReadNode* rnext = nullptr;
   Node* end = nullptr;
   std::int32_t heap = -1;  // index in the queue of affected reads, −1 if not queued
-  ReadNode() : Node(Kind::ReadStart) {}
+  bool in_table = false;   // a MemoReadNode whose key is in the runtime's hash table (Node::flag is the IRead flag)
+  explicit ReadNode(Kind k = Kind::ReadStart) : Node(k) {}
   virtual ~ReadNode() = default;
   virtual void rerun() = 0;
 };
@@ -199,11 +204,15 @@ struct IReadNode : ReadNode {  // a read of an IMod (flag set): on the reader li
   IVersion* ver = nullptr;
 };
 
-struct KeyedNode : Node {  // memo and alloc nodes, indexed by key hash
+// The key-index entry of a memo, alloc or memo-read node (lookup only; see Runtime::index).
+struct KeyLink {
   std::uint64_t hash = 0;
   const void* tag = nullptr;  // identifies the key/value types; null: a fresh allocation (never indexed)
-  KeyedNode* hnext = nullptr;
-  KeyedNode** hpprev = nullptr;
+  Node* hnext = nullptr;
+  Node** hpprev = nullptr;
+};
+
+struct KeyedNode : Node, KeyLink {  // memo and alloc nodes, indexed by key hash
   using Node::Node;
 };
 
@@ -217,12 +226,25 @@ struct MemoType {
 };
 
 struct MemoNode : KeyedNode {  // MemoImpl holds the key and result
+  static constexpr Kind kKind = Kind::MemoStart;
   const Label* label = nullptr;
   Node* end = nullptr;
   MemoNode() : KeyedNode(Kind::MemoStart) {}
   const MemoType& type() const { return *static_cast<const MemoType*>(tag); }
   std::uint64_t result_hash() const { return type().result_hash(this); }
   ModBase* owned() const { return type().owned(this); }
+};
+
+// A memo_box call whose body is one read (Runtime::memo_read; issue 8 §2, CEAL's one node per basic
+// block): the call, its destination, the read and the destination's write share one node, one
+// stamp and one end. It is a read (reader lists, the queue, rerun) with a key-index entry; the
+// write of `dest` by its own closure is recorded inline (dest->inline_write; dest->writer is the
+// stamp the write follows, a top-level node of this interval, so it lives as long as this execution).
+struct MemoReadNode : ReadNode, KeyLink {
+  static constexpr Kind kKind = Kind::MemoRead;
+  const Label* label = nullptr;
+  ModBase* dest = nullptr;  // the memo_box destination, freed with this node's trace (null: memo_read<void>)
+  MemoReadNode() : ReadNode(Kind::MemoRead) {}
 };
 
 struct AllocNode : KeyedNode {
@@ -291,13 +313,14 @@ struct ModTypeOf {
 struct ModBase {
   std::uint64_t name = 0;       // canonical: allocation key, or the input's name
   ReadNode* readers = nullptr;  // intrusive list of live reads
-  WriteNode* writer = nullptr;  // the write of the current execution (owned modifiables)
-  KeyedNode* keyed = nullptr;   // memo/alloc nodes whose key's first modifiable is this one
+  Node* writer = nullptr;       // the write of the current execution: its WriteNode, or (inline_write) the stamp it follows
+  Node* keyed = nullptr;        // memo/alloc nodes whose key's first modifiable is this one
   bool input = false;
   bool written = false;
   bool dead = false;
   bool imperative = false;      // an IMod
   bool external = false;        // a traceable allocated in a run: set by its owner between runs
+  bool inline_write = false;    // a memo_read destination written by its node's closure (no WriteNode)
   std::uint16_t type = 0;       // index of its ModType (set by the runtime at allocation)
   const ModType& descriptor() const { return *detail::mod_type(type); }
   std::uint64_t value_hash() const { return descriptor().value_hash(this); }  // of the current value (signature)
@@ -331,7 +354,7 @@ inline std::uint64_t canon_key(const ModBase* m) { return m ? m->name : 0x6e696c
 
 static_assert(sizeof(Node) == 32, "sac: Node should reuse the Stamp's tail padding");
 static_assert(sizeof(ModBase) == 40 && sizeof(Mod<long long>) == 48, "sac: a modifiable carries no vtable pointer");
-static_assert(sizeof(ReadNode) == 80 && sizeof(MemoNode) == 80 && sizeof(AllocNode) == 72 && sizeof(WriteNode) == 40 &&
+static_assert(sizeof(ReadNode) == 80 && sizeof(MemoNode) == 80 && sizeof(MemoReadNode) == 128 && sizeof(AllocNode) == 72 && sizeof(WriteNode) == 40 &&
               sizeof(EndNode) == 32);
 
 // ---- statistics -------------------------------------------------------------------------------
@@ -463,14 +486,25 @@ class Runtime {
   template <class T>
   void write(Mod<T>* m, T value) {
     inside("write");
-    if (check_writable(m)) {  // the write moved earlier: the later one must go before propagate ends
-      m->writer->flag = true;
-      ++stale_writes_;
-      ++stats_.writes_moved_earlier;
+    Node* w;
+    if (open_ && m == open_->dest) {  // memo_read's destination, written by its own closure (never for memo_read<void>)
+      // Recorded inline: the writer is the stamp the write follows (now), so reads are checked
+      // against the write's exact time. A writer outside the window is this execution's.
+      if (m->writer && !in_window(m->writer)) fail_written_twice(m);
+      m->inline_write = true;
+      w = static_cast<Node*>(now_);
+    } else {
+      if (check_writable(m)) {  // the write moved earlier: the later one must go before propagate ends
+        m->writer->flag = true;
+        ++stale_writes_;
+        ++stats_.writes_moved_earlier;
+      }
+      m->inline_write = false;
+      auto* wn = make_node<WriteNode>();
+      append(wn);
+      wn->mod = m;
+      w = wn;
     }
-    WriteNode* w = make_node<WriteNode>();
-    append(w);
-    w->mod = m;
     bool changed = !m->written || !(m->value == value);
     m->writer = w;
     if (changed) {
@@ -683,6 +717,42 @@ class Runtime {
       return dest;
     });
   }
+  // memo_read(label, key, src, k): memo_box whose body is one read of src (ΔML `mfun f l = Box.get l
+  // (fn c => ...)`, map's loop), the same as
+  //   memo_box<T>(label, key, [=](Mod<T>* d) { read(src, [=](const U& v) { k(v, d); }); })
+  // but in one trace node: call, destination, read and the destination's write by k share one
+  // stamp and one end (issue 8 §2). k(v, dest) is re-run when src changes; it writes dest at most
+  // once directly (a write of dest inside a nested read or memo call is an ordinary write).
+  // memo_read<void>(label, key, src, k): the same for `memo<Unit>(label, key, [=]{ read(src, k); ...})`
+  // (a memoized call whose body is one read, with no destination): k(v) only.
+  template <class T, class Key, class U, class F>
+  std::conditional_t<std::is_void_v<T>, void, Mod<T>*> memo_read(const Label& label, const Key& key, Mod<U>* src,
+                                                                   F&& k) {
+    inside("memo");
+    using M = MemoReadImpl<Key, T, U, std::decay_t<F>>;
+    std::uint64_t h = mix(label.hash, canon_key(key));
+    ModBase* anchor = anchor_of(key);
+    if (finger_) {
+      if (M* m = reuse_memo<M>(h, label, key, anchor)) {
+        if constexpr (!std::is_void_v<T>) return static_cast<Mod<T>*>(m->dest);
+        else return;
+      }
+    }
+    ++stats_.memo_misses;
+    check_readable(src);
+    M* m = make_node<M>(key, std::forward<F>(k));
+    append(m);
+    m->hash = h;
+    m->label = &label;
+    if constexpr (!std::is_void_v<T>) {
+      auto* dest = make_mod<Mod<T>>();
+      dest->name = mix(h, 0xde57);  // as memo_box names it
+      ++live_owned_;
+      m->dest = dest;
+    }
+    first_run(m, src, anchor);
+    if constexpr (!std::is_void_v<T>) return static_cast<Mod<T>*>(m->dest);
+  }
   // Undo hook: f runs when this point of the trace is discarded (not on ~Runtime). f may take its
   // own HookId: the identity of this registration, distinct from every other hook's, so an owner
   // that registers by name can tell a discarded registration from its replacement (spec/sac.md,
@@ -732,6 +802,19 @@ class Runtime {
     Keys keys;
     AllocImpl(const Label* l, Keys k) : label(l), keys(std::move(k)) {}
   };
+  template <class Key, class T, class U, class F>
+  struct MemoReadImpl : MemoReadNode {
+    Key key;
+    F k;
+    static constexpr char desc = 0;  // its address is the tag
+    template <class G>
+    MemoReadImpl(const Key& key_, G&& g) : key(key_), k(std::forward<G>(g)) { tag = &desc; }
+    void rerun() override {
+      const U& v = static_cast<Mod<U>*>(mod)->value;
+      if constexpr (std::is_void_v<T>) k(v);
+      else k(v, static_cast<Mod<T>*>(dest));
+    }
+  };
   template <class T, class F>
   struct IReadImpl : IReadNode {
     F k;
@@ -772,17 +855,21 @@ class Runtime {
       rt.finger_ = finger;
     }
   };
-  struct FreshScope {  // names fresh allocations by their enclosing read or memo call
+  struct FreshScope {  // names fresh allocations by their enclosing read or memo call; sets open_
     Runtime& rt;
     std::uint64_t scope;
     std::uint32_t ordinal;
-    FreshScope(Runtime& r, std::uint64_t s) : rt(r), scope(r.scope_), ordinal(r.fresh_ordinal_) {
+    MemoReadNode* open;
+    FreshScope(Runtime& r, std::uint64_t s, MemoReadNode* o = nullptr)
+        : rt(r), scope(r.scope_), ordinal(r.fresh_ordinal_), open(r.open_) {
       rt.scope_ = s;
       rt.fresh_ordinal_ = 0;
+      rt.open_ = o;
     }
     ~FreshScope() {
       rt.scope_ = scope;
       rt.fresh_ordinal_ = ordinal;
+      rt.open_ = open;
     }
   };
   static std::uint64_t read_scope(const ModBase* m) { return mix(m->name, 0x52ead); }
@@ -852,17 +939,30 @@ class Runtime {
   void heap_down(std::size_t i);
 
   // key index for memo and alloc nodes (lookup only; results never depend on its order)
-  void index(KeyedNode* n, ModBase* anchor);
-  void unindex(KeyedNode* n);
+  static KeyLink* key_link(Node* n) {
+    if (n->kind == Kind::MemoRead) return static_cast<MemoReadNode*>(static_cast<ReadNode*>(n));
+    return static_cast<KeyedNode*>(n);
+  }
+  static const KeyLink* key_link(const Node* n) { return key_link(const_cast<Node*>(n)); }
+  static void set_in_table(Node* n, bool v) {
+    if (n->kind == Kind::MemoRead) static_cast<ReadNode*>(n)->in_table = v;
+    else n->flag = v;
+  }
+  static bool in_table(const Node* n) {
+    return n->kind == Kind::MemoRead ? static_cast<const ReadNode*>(n)->in_table : n->flag;
+  }
+  void index(Node* n, ModBase* anchor);
+  void unindex(Node* n);
   void unindex_all(ModBase* m) {
     while (m->keyed) unindex(m->keyed);
   }
-  KeyedNode* chain(std::uint64_t h, const ModBase* anchor) const {
+  Node* chain(std::uint64_t h, const ModBase* anchor) const {
     return anchor ? anchor->keyed : buckets_[h & (buckets_.size() - 1)];
   }
   template <class M, class A>
-  static bool same_key(const KeyedNode* n, std::uint64_t h, const Label& label, const decltype(A::keys)& key) {
-    if (n->hash != h || n->kind != Kind::Alloc || n->tag != tag<std::pair<M, A>>()) return false;
+  static bool same_key(const Node* n, std::uint64_t h, const Label& label, const decltype(A::keys)& key) {
+    if (n->kind != Kind::Alloc) return false;
+    if (static_cast<const A*>(n)->hash != h || static_cast<const A*>(n)->tag != tag<std::pair<M, A>>()) return false;
     auto* a = static_cast<const A*>(n);
     return a->mod && (a->label == &label || std::strcmp(a->label->name, label.name) == 0) && a->keys == key;
   }
@@ -870,7 +970,7 @@ class Runtime {
   template <class M, class A>
   A* find_alloc(const Label& label, std::uint64_t h, const decltype(A::keys)& key, const ModBase* anchor) const {
     A* best = nullptr;
-    for (KeyedNode* n = chain(h, anchor); n; n = n->hnext) {
+    for (Node* n = chain(h, anchor); n; n = key_link(n)->hnext) {
       if (!same_key<M, A>(n, h, label, key) || !in_window(n)) continue;
       if (!best || OrderList::before(n, best)) best = static_cast<A*>(n);
     }
@@ -880,15 +980,15 @@ class Runtime {
   // execution too.
   template <class M, class A>
   bool taken(const Label& label, std::uint64_t h, const decltype(A::keys)& key, const ModBase* anchor) const {
-    for (KeyedNode* n = chain(h, anchor); n; n = n->hnext)
+    for (Node* n = chain(h, anchor); n; n = key_link(n)->hnext)
       if (same_key<M, A>(n, h, label, key) && (OrderList::before(n, now_) || n == now_)) return true;
     return false;
   }
   template <class M, class Key>
   M* find_memo(std::uint64_t h, const Label& label, const Key& key, const ModBase* anchor) const {
     M* best = nullptr;
-    for (KeyedNode* n = chain(h, anchor); n; n = n->hnext) {
-      if (n->hash != h || n->tag != &M::desc || n->kind != Kind::MemoStart) continue;
+    for (Node* n = chain(h, anchor); n; n = key_link(n)->hnext) {  // memo and memo-read nodes (M::kKind)
+      if (n->kind != M::kKind || key_link(n)->hash != h || key_link(n)->tag != &M::desc) continue;
       auto* m = static_cast<M*>(n);
       if ((m->label != &label && std::strcmp(m->label->name, label.name) != 0) || !(m->key == key)) continue;
       if (!in_window(m) || !OrderList::before(m->end, finger_)) continue;
@@ -896,6 +996,25 @@ class Runtime {
     }
     return best;
   }
+
+  // The memo (or memo-read) node to reuse, with the trace before it discarded and the affected reads
+  // inside it propagated; null if none. Out of line: re-execution only (keeps the recursive path's
+  // native frames small).
+  template <class M, class Key>
+  [[gnu::noinline]] M* reuse_memo(std::uint64_t h, const Label& label, const Key& key, const ModBase* anchor) {
+    M* m = find_memo<M>(h, label, key, anchor);
+    if (!m) return nullptr;
+    ++stats_.memo_hits;
+    discard(now_, m);
+    propagate_until(m->end);
+    now_ = m->end;
+    return m;
+  }
+  [[noreturn, gnu::noinline, gnu::cold]] static void fail_written_twice(const ModBase* m);
+  // A new memo-read node's first execution: registers the read, runs its closure, ends and indexes
+  // it. Out of line and not a template, so that each level of a program's recursion through
+  // memo_read adds one small fixed frame (native stack is touched memory too).
+  void first_run(MemoReadNode* m, ModBase* src, ModBase* anchor);
 
   void rerun(ReadNode* r);
   void propagate_until(const Stamp* end);  // processes queued reads that start before end
@@ -912,9 +1031,10 @@ class Runtime {
   std::uint32_t fresh_ordinal_ = 0;  // fresh allocations so far in that scope
   std::uint64_t stale_writes_ = 0;   // live writes superseded by an earlier write
   HookId hook_serial_ = 0;
+  MemoReadNode* open_ = nullptr;     // the memo_read node whose closure runs innermost (inline writes of its dest)
   std::vector<ModBase*> unwritten_;   // modifiables whose writer was discarded in this propagation
   std::vector<ReadNode*> heap_;
-  std::vector<KeyedNode*> buckets_;
+  std::vector<Node*> buckets_;
   std::size_t indexed_ = 0;
   std::vector<ModBase*> dead_;
   std::unordered_set<ModBase*> inputs_;  // lookup and freeing only

@@ -3,19 +3,20 @@
 
 namespace kmr::sacprograms {
 
-long long map_fn(long long x) { return 3 * x + 1; }
+// 3x + 1 modulo 2^64 (unsigned arithmetic: defined for every input, no signed overflow; the static
+// twin and the references call this same function).
+long long map_fn(long long x) { return static_cast<long long>(3ULL * static_cast<unsigned long long>(x) + 1ULL); }
 bool keep_fn(long long x) { return (x & 3) != 0; }
 
 namespace {
 constexpr Label kMap{"map"}, kMapOut{"map.out"};
 
-// ΔML map's loop as a destination-passing memo: the output cell lives in the memo node.
+// ΔML map's loop as a destination-passing memo whose body is one read: call, output cell, read and
+// write share one trace node (memo_read).
 List* map_list(Runtime* rt, List* l) {
-  return rt->memo_box<Cell>(kMap, l, [rt, l](List* dest) {
-    rt->read(l, [rt, dest](const Cell& c) {
-      if (c.nil) rt->write(dest, Cell{});
-      else rt->write(dest, Cell{false, map_fn(c.head), map_list(rt, c.tail)});
-    });
+  return rt->memo_read<Cell>(kMap, l, l, [rt](const Cell& c, List* dest) {
+    if (c.nil) rt->write(dest, Cell{});
+    else rt->write(dest, Cell{false, map_fn(c.head), map_list(rt, c.tail)});
   });
 }
 

@@ -124,18 +124,16 @@ namespace {
 constexpr Label kNode{"tree.node"}, kEval{"eval"};
 
 Mod<long long>* eval(Runtime* rt, Mod<TNode>* t) {
-  return rt->memo_box<long long>(kEval, t, [rt, t](Mod<long long>* dest) {
-    rt->read(t, [rt, dest](const TNode& n) {
-      if (n.leaf) {
-        rt->write(dest, n.val);
-        return;
-      }
-      Mod<long long>* a = eval(rt, n.l);
-      Mod<long long>* b = eval(rt, n.r);
-      int op = n.op;
-      rt->read(a, [rt, dest, b, op](long long x) {
-        rt->read(b, [rt, dest, op, x](long long y) { rt->write(dest, apply_op(op, x, y)); });
-      });
+  return rt->memo_read<long long>(kEval, t, t, [rt](const TNode& n, Mod<long long>* dest) {
+    if (n.leaf) {
+      rt->write(dest, n.val);
+      return;
+    }
+    Mod<long long>* a = eval(rt, n.l);
+    Mod<long long>* b = eval(rt, n.r);
+    int op = n.op;
+    rt->read(a, [rt, dest, b, op](long long x) {
+      rt->read(b, [rt, dest, op, x](long long y) { rt->write(dest, apply_op(op, x, y)); });
     });
   });
 }

@@ -94,22 +94,20 @@ template <class P>
 struct Filter {
   using Ctx = typename P::Ctx;
   static Unit into(Runtime* rt, List* l, Ctx ctx, List* dest) {
-    return rt->memo<Unit>(P::kFilter, std::make_tuple(l, ctx, dest), [rt, l, ctx, dest] {
-      rt->read(l, [rt, l, ctx, dest](const Cell& c) {
-        if (c.nil) {
-          rt->write(dest, Cell{});
-        } else if (P::keep(ctx, c.head)) {
-          // P::kByValue: name the cell by the element's value, not by its cell (whose name may
-          // itself come from an earlier filter and would shift with edits, cascading).
-          List* cell = P::kByValue ? rt->alloc<Cell>(P::kCell, c.head, ctx) : rt->alloc<Cell>(P::kCell, l, ctx);
-          rt->write(dest, Cell{false, c.head, cell});
-          into(rt, c.tail, ctx, cell);
-        } else {
-          into(rt, c.tail, ctx, dest);
-        }
-      });
-      return Unit{};
+    rt->memo_read<void>(P::kFilter, std::make_tuple(l, ctx, dest), l, [rt, l, ctx, dest](const Cell& c) {
+      if (c.nil) {
+        rt->write(dest, Cell{});
+      } else if (P::keep(ctx, c.head)) {
+        // P::kByValue: name the cell by the element's value, not by its cell (whose name may
+        // itself come from an earlier filter and would shift with edits, cascading).
+        List* cell = P::kByValue ? rt->alloc<Cell>(P::kCell, c.head, ctx) : rt->alloc<Cell>(P::kCell, l, ctx);
+        rt->write(dest, Cell{false, c.head, cell});
+        into(rt, c.tail, ctx, cell);
+      } else {
+        into(rt, c.tail, ctx, dest);
+      }
     });
+    return Unit{};
   }
 };
 
@@ -119,37 +117,31 @@ struct Reduce {
   using Ctx = typename Op::Ctx;
   // One round: the blocks of l (a block ends before every cell whose coin is heads) → block sums.
   static List* half(Runtime* rt, List* l, Ctx ctx, std::uint64_t r) {
-    return rt->memo_box<Cell>(Op::kHalf, std::make_tuple(l, ctx, r), [rt, l, ctx, r](List* dest) {
-      rt->read(l, [rt, ctx, r, dest](const Cell& c) {
-        if (c.nil) rt->write(dest, Cell{});
-        else absorb(rt, c.tail, c.head, ctx, r, dest);
-      });
+    return rt->memo_read<Cell>(Op::kHalf, std::make_tuple(l, ctx, r), l, [rt, ctx, r](const Cell& c, List* dest) {
+      if (c.nil) rt->write(dest, Cell{});
+      else absorb(rt, c.tail, c.head, ctx, r, dest);
     });
   }
   static Unit absorb(Runtime* rt, List* l, long long acc, Ctx ctx, std::uint64_t r, List* dest) {
-    return rt->memo<Unit>(Op::kAbsorb, std::make_tuple(l, acc, ctx, r, dest), [rt, l, acc, ctx, r, dest] {
-      rt->read(l, [rt, l, acc, ctx, r, dest](const Cell& c) {
-        if (c.nil || coin(l, r)) rt->write(dest, Cell{false, acc, half(rt, l, ctx, r)});
-        else absorb(rt, c.tail, Op::combine(ctx, acc, c.head), ctx, r, dest);
-      });
-      return Unit{};
+    rt->memo_read<void>(Op::kAbsorb, std::make_tuple(l, acc, ctx, r, dest), l, [rt, l, acc, ctx, r, dest](const Cell& c) {
+      if (c.nil || coin(l, r)) rt->write(dest, Cell{false, acc, half(rt, l, ctx, r)});
+      else absorb(rt, c.tail, Op::combine(ctx, acc, c.head), ctx, r, dest);
     });
+    return Unit{};
   }
   static Unit run(Runtime* rt, List* l, Ctx ctx, std::uint64_t r, Mod<long long>* res) {
-    return rt->memo<Unit>(Op::kReduce, std::make_tuple(l, ctx, r, res), [rt, l, ctx, r, res] {
-      rt->read(l, [rt, l, ctx, r, res](const Cell& c) {
-        if (c.nil) {
-          rt->write(res, Op::identity(ctx));
-          return;
-        }
-        long long h = c.head;
-        rt->read(c.tail, [rt, l, ctx, r, res, h](const Cell& c2) {
-          if (c2.nil) rt->write(res, h);
-          else run(rt, half(rt, l, ctx, r), ctx, r + 1, res);
-        });
+    rt->memo_read<void>(Op::kReduce, std::make_tuple(l, ctx, r, res), l, [rt, l, ctx, r, res](const Cell& c) {
+      if (c.nil) {
+        rt->write(res, Op::identity(ctx));
+        return;
+      }
+      long long h = c.head;
+      rt->read(c.tail, [rt, l, ctx, r, res, h](const Cell& c2) {
+        if (c2.nil) rt->write(res, h);
+        else run(rt, half(rt, l, ctx, r), ctx, r + 1, res);
       });
-      return Unit{};
     });
+    return Unit{};
   }
 };
 

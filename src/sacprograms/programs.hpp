@@ -3,7 +3,7 @@
 // same algorithm without tracing, like ΔML's automatically generated non-adaptive version).
 // Guarantees (tested in proptests/sac against the twins, and in tests/sac against independent
 // references: std::transform, std::accumulate, std::sort, a monotone-chain hull, recursive eval):
-//  * map:       out[i] = map_fn(in[i]).
+//  * map:       out[i] = map_fn(in[i]) = 3 in[i] + 1, wrapping modulo 2^64 (defined for every input).
 //  * filter:    the elements with keep_fn(x), in order.
 //  * sum:       Σ in (wrapping 64-bit), by randomized contraction.
 //  * quicksort: in sorted ascending (stable for equal keys), first element as pivot.

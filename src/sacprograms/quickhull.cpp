@@ -67,28 +67,26 @@ constexpr Label kSide{"qh.side"}, kFar{"qh.far"}, kL1{"qh.l1"}, kL2{"qh.l2"}, kM
 
 // side(l, a, b, rest): the hull vertices strictly right of a→b, from a to b, followed by rest.
 Unit side(Runtime* rt, List* l, long long a, long long b, List* rest, List* dest) {
-  return rt->memo<Unit>(kSide, std::make_tuple(l, a, b, rest, dest), [rt, l, a, b, rest, dest] {
-    rt->read(l, [rt, l, a, b, rest, dest](const Cell& c) {
-      if (c.nil) {
-        rt->read(rest, [rt, dest](const Cell& v) { rt->write(dest, v); });
-        return;
-      }
-      Mod<long long>* far = rt->alloc<long long>(kFar, a, b);
-      Reduce<FarOp>::run(rt, l, Ctx{a, b}, 0, far);
-      rt->read(far, [rt, l, a, b, rest, dest](long long f) {
-        List* l1 = rt->alloc<Cell>(kL1, a, f);
-        List* l2 = rt->alloc<Cell>(kL2, f, b);
-        Filter<RightOf>::into(rt, l, Ctx{a, f}, l1);
-        Filter<RightOf>::into(rt, l, Ctx{f, b}, l2);
-        List* mid = rt->alloc<Cell>(kMid, a, b);
-        List* midtail = rt->alloc<Cell>(kMidTail, a, b);
-        side(rt, l2, f, b, rest, midtail);
-        rt->write(mid, Cell{false, f, midtail});
-        side(rt, l1, a, f, mid, dest);
-      });
+  rt->memo_read<void>(kSide, std::make_tuple(l, a, b, rest, dest), l, [rt, l, a, b, rest, dest](const Cell& c) {
+    if (c.nil) {
+      rt->read(rest, [rt, dest](const Cell& v) { rt->write(dest, v); });
+      return;
+    }
+    Mod<long long>* far = rt->alloc<long long>(kFar, a, b);
+    Reduce<FarOp>::run(rt, l, Ctx{a, b}, 0, far);
+    rt->read(far, [rt, l, a, b, rest, dest](long long f) {
+      List* l1 = rt->alloc<Cell>(kL1, a, f);
+      List* l2 = rt->alloc<Cell>(kL2, f, b);
+      Filter<RightOf>::into(rt, l, Ctx{a, f}, l1);
+      Filter<RightOf>::into(rt, l, Ctx{f, b}, l2);
+      List* mid = rt->alloc<Cell>(kMid, a, b);
+      List* midtail = rt->alloc<Cell>(kMidTail, a, b);
+      side(rt, l2, f, b, rest, midtail);
+      rt->write(mid, Cell{false, f, midtail});
+      side(rt, l1, a, f, mid, dest);
     });
-    return Unit{};
   });
+  return Unit{};
 }
 }  // namespace
 

@@ -11,43 +11,39 @@ constexpr Label kQs{"qsort"}, kQsSplit{"qsort.split"}, kQsLes{"qsort.les"}, kQsG
 
 // Cells are keyed by (element cell, pivot cell): unique within a run, as keys must be.
 Unit qs_split(Runtime* rt, List* l, long long p, List* pk, List* dl, List* dg) {
-  return rt->memo<Unit>(kQsSplit, std::make_tuple(l, p, pk, dl, dg), [rt, l, p, pk, dl, dg] {
-    rt->read(l, [rt, l, p, pk, dl, dg](const Cell& c) {
-      if (c.nil) {
-        rt->write(dl, Cell{});
-        rt->write(dg, Cell{});
-      } else if (c.head < p) {
-        List* cell = rt->alloc<Cell>(kQsLCell, l, pk);
-        rt->write(dl, Cell{false, c.head, cell});
-        qs_split(rt, c.tail, p, pk, cell, dg);
-      } else {
-        List* cell = rt->alloc<Cell>(kQsGCell, l, pk);
-        rt->write(dg, Cell{false, c.head, cell});
-        qs_split(rt, c.tail, p, pk, dl, cell);
-      }
-    });
-    return Unit{};
+  rt->memo_read<void>(kQsSplit, std::make_tuple(l, p, pk, dl, dg), l, [rt, l, p, pk, dl, dg](const Cell& c) {
+    if (c.nil) {
+      rt->write(dl, Cell{});
+      rt->write(dg, Cell{});
+    } else if (c.head < p) {
+      List* cell = rt->alloc<Cell>(kQsLCell, l, pk);
+      rt->write(dl, Cell{false, c.head, cell});
+      qs_split(rt, c.tail, p, pk, cell, dg);
+    } else {
+      List* cell = rt->alloc<Cell>(kQsGCell, l, pk);
+      rt->write(dg, Cell{false, c.head, cell});
+      qs_split(rt, c.tail, p, pk, dl, cell);
+    }
   });
+  return Unit{};
 }
 
 Unit qs(Runtime* rt, List* l, List* rest, List* dest) {
-  return rt->memo<Unit>(kQs, std::make_tuple(l, rest, dest), [rt, l, rest, dest] {
-    rt->read(l, [rt, l, rest, dest](const Cell& c) {
-      if (c.nil) {
-        rt->read(rest, [rt, dest](const Cell& v) { rt->write(dest, v); });
-        return;
-      }
-      List* les = rt->alloc<Cell>(kQsLes, l);
-      List* grt = rt->alloc<Cell>(kQsGrt, l);
-      qs_split(rt, c.tail, c.head, l, les, grt);
-      List* mid = rt->alloc<Cell>(kQsMid, l);
-      List* midtail = rt->alloc<Cell>(kQsMidTail, l);
-      rt->write(mid, Cell{false, c.head, midtail});
-      qs(rt, grt, rest, midtail);
-      qs(rt, les, mid, dest);
-    });
-    return Unit{};
+  rt->memo_read<void>(kQs, std::make_tuple(l, rest, dest), l, [rt, l, rest, dest](const Cell& c) {
+    if (c.nil) {
+      rt->read(rest, [rt, dest](const Cell& v) { rt->write(dest, v); });
+      return;
+    }
+    List* les = rt->alloc<Cell>(kQsLes, l);
+    List* grt = rt->alloc<Cell>(kQsGrt, l);
+    qs_split(rt, c.tail, c.head, l, les, grt);
+    List* mid = rt->alloc<Cell>(kQsMid, l);
+    List* midtail = rt->alloc<Cell>(kQsMidTail, l);
+    rt->write(mid, Cell{false, c.head, midtail});
+    qs(rt, grt, rest, midtail);
+    qs(rt, les, mid, dest);
   });
+  return Unit{};
 }
 
 // ---- mergesort: split by coins of cell names, sort halves, merge (ΔML msort) -----------------
@@ -62,72 +58,66 @@ bool ms_coin(const List* l, long long x, std::uint64_t d) {
 }
 
 Unit ms_split(Runtime* rt, List* l, std::uint64_t d, List* a, List* b) {
-  return rt->memo<Unit>(kMsSplit, std::make_tuple(l, d, a, b), [rt, l, d, a, b] {
-    rt->read(l, [rt, l, d, a, b](const Cell& c) {
-      if (c.nil) {
-        rt->write(a, Cell{});
-        rt->write(b, Cell{});
-      } else if (ms_coin(l, c.head, d)) {
-        List* cell = rt->alloc<Cell>(kMsCA, l, d);
-        rt->write(a, Cell{false, c.head, cell});
-        ms_split(rt, c.tail, d, cell, b);
-      } else {
-        List* cell = rt->alloc<Cell>(kMsCB, l, d);
-        rt->write(b, Cell{false, c.head, cell});
-        ms_split(rt, c.tail, d, a, cell);
-      }
-    });
-    return Unit{};
+  rt->memo_read<void>(kMsSplit, std::make_tuple(l, d, a, b), l, [rt, l, d, a, b](const Cell& c) {
+    if (c.nil) {
+      rt->write(a, Cell{});
+      rt->write(b, Cell{});
+    } else if (ms_coin(l, c.head, d)) {
+      List* cell = rt->alloc<Cell>(kMsCA, l, d);
+      rt->write(a, Cell{false, c.head, cell});
+      ms_split(rt, c.tail, d, cell, b);
+    } else {
+      List* cell = rt->alloc<Cell>(kMsCB, l, d);
+      rt->write(b, Cell{false, c.head, cell});
+      ms_split(rt, c.tail, d, a, cell);
+    }
   });
+  return Unit{};
 }
 
 Unit ms_merge(Runtime* rt, List* a, List* b, std::uint64_t d, List* dest) {
-  return rt->memo<Unit>(kMsMerge, std::make_tuple(a, b, d, dest), [rt, a, b, d, dest] {
-    rt->read(a, [rt, a, b, d, dest](const Cell& ca) {
-      rt->read(b, [rt, a, b, d, dest, ca](const Cell& cb) {
-        if (ca.nil) {
-          rt->write(dest, cb);
-        } else if (cb.nil) {
-          rt->write(dest, ca);
-        } else if (ca.head <= cb.head) {
-          List* cell = rt->alloc<Cell>(kMsCell, a);
-          rt->write(dest, Cell{false, ca.head, cell});
-          ms_merge(rt, ca.tail, b, d, cell);
-        } else {
-          List* cell = rt->alloc<Cell>(kMsCell, b);
-          rt->write(dest, Cell{false, cb.head, cell});
-          ms_merge(rt, a, cb.tail, d, cell);
-        }
-      });
+  rt->memo_read<void>(kMsMerge, std::make_tuple(a, b, d, dest), a, [rt, a, b, d, dest](const Cell& ca) {
+    rt->read(b, [rt, a, b, d, dest, ca](const Cell& cb) {
+      if (ca.nil) {
+        rt->write(dest, cb);
+      } else if (cb.nil) {
+        rt->write(dest, ca);
+      } else if (ca.head <= cb.head) {
+        List* cell = rt->alloc<Cell>(kMsCell, a);
+        rt->write(dest, Cell{false, ca.head, cell});
+        ms_merge(rt, ca.tail, b, d, cell);
+      } else {
+        List* cell = rt->alloc<Cell>(kMsCell, b);
+        rt->write(dest, Cell{false, cb.head, cell});
+        ms_merge(rt, a, cb.tail, d, cell);
+      }
     });
-    return Unit{};
   });
+  return Unit{};
 }
 
 Unit ms(Runtime* rt, List* l, std::uint64_t d, std::uint64_t path, List* dest) {
-  return rt->memo<Unit>(kMs, std::make_tuple(l, d, path, dest), [rt, l, d, path, dest] {
-    rt->read(l, [rt, l, d, path, dest](const Cell& c) {
-      if (c.nil) {
-        rt->write(dest, Cell{});
+  rt->memo_read<void>(kMs, std::make_tuple(l, d, path, dest), l, [rt, l, d, path, dest](const Cell& c) {
+    if (c.nil) {
+      rt->write(dest, Cell{});
+      return;
+    }
+    rt->read(c.tail, [rt, l, d, path, dest, c](const Cell& c2) {
+      if (c2.nil) {
+        rt->write(dest, c);
         return;
       }
-      rt->read(c.tail, [rt, l, d, path, dest, c](const Cell& c2) {
-        if (c2.nil) {
-          rt->write(dest, c);
-          return;
-        }
-        List* a = rt->alloc<Cell>(kMsA, path);
-        List* b = rt->alloc<Cell>(kMsB, path);
-        ms_split(rt, l, d, a, b);
-        List* sa = rt->alloc<Cell>(kMsSA, path);
-        List* sb = rt->alloc<Cell>(kMsSB, path);
-        ms(rt, a, d + 1, sac::mix(path, 1), sa);
-        ms(rt, b, d + 1, sac::mix(path, 2), sb);
-        ms_merge(rt, sa, sb, d, dest);
-      });
+      List* a = rt->alloc<Cell>(kMsA, path);
+      List* b = rt->alloc<Cell>(kMsB, path);
+      ms_split(rt, l, d, a, b);
+      List* sa = rt->alloc<Cell>(kMsSA, path);
+      List* sb = rt->alloc<Cell>(kMsSB, path);
+      ms(rt, a, d + 1, sac::mix(path, 1), sa);
+      ms(rt, b, d + 1, sac::mix(path, 2), sb);
+      ms_merge(rt, sa, sb, d, dest);
     });
-    return Unit{};
   });
+  return Unit{};
 }
 }  // namespace
 

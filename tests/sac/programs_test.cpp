@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <random>
 
 #include "sacprograms/bench.hpp"
@@ -46,6 +47,18 @@ TEST(SacPrograms, S1_3_FromScratchOutputsMatchIndependentReferences) {
       EXPECT_EQ(out, s.static_output()) << p.name << " static twin, n=" << in.size();
     }
   }
+}
+
+// map at the ends of the 64-bit range: 3x + 1 wraps modulo 2^64 (hand-derived values; the old signed
+// arithmetic was undefined behaviour there, reported by the UBSan run), self-adjusting and static.
+TEST(SacPrograms, MapWrapsAtTheEndsOfTheRange) {
+  const long long kMax = std::numeric_limits<long long>::max(), kMin = std::numeric_limits<long long>::min();
+  std::vector<long long> in{kMax, kMin, kMax / 3 + 1, -1, 0};
+  std::vector<long long> want{kMax - 1, kMin + 1, kMin + 2, -2, 1};
+  ListSession s(list_program("map"), in);
+  EXPECT_EQ(s.snapshot(false).output, want);
+  EXPECT_EQ(s.static_output(), want);
+  EXPECT_EQ(map_fn(kMin / 3 - 2), kMax - 2);  // 3 (−3074457345618258604) + 1 = −2^63 − 3 ≡ 2^63 − 3
 }
 
 TEST(SacPrograms, S1_3_QuickhullSquareWithInteriorAndEdgePoints) {
