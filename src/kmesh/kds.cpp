@@ -35,8 +35,20 @@ KineticMesh::KineticMesh(std::vector<InputPoint> trajectories, int lattice_bits)
 
 // The global stages after a change: the mesh renumbered with its Delaunay triangulation, and the
 // certificates of M and of S_N as polynomials of t − now.
+namespace {
+
+std::set<std::pair<Dyadic, Dyadic>> steiner_positions(const Mesh& m) {
+  std::set<std::pair<Dyadic, Dyadic>> s;
+  for (std::size_t v = 0; v < m.size(); ++v)
+    if (m.info[v].steiner) s.insert({m.spanner.position(int(v))[0], m.spanner.position(int(v))[1]});
+  return s;
+}
+
+}  // namespace
+
 void KineticMesh::recertify() {
   mesh_ = upd_.mesh();
+  mesh_time_ = now();
   certs_ = certificates(mesh_);
   mesh_certs_ = certs_.size();
   Mesh sn = upd_.input_spanner_mesh();
@@ -45,10 +57,13 @@ void KineticMesh::recertify() {
 }
 
 void KineticMesh::refresh(const std::string& what, std::size_t events, std::size_t moved) {
+  auto before = steiner_positions(mesh_time_ == now() ? mesh_ : moved_to(mesh_, now() - mesh_time_));
   recertify();
-  Batch b{now(), events, what, mesh_.size(), 0, 0};
-  b.ops = upd_.last().ops;
-  b.affected = upd_.last().affected;
+  auto after = steiner_positions(mesh_);
+  std::size_t kept = 0;
+  for (auto& p : before) kept += after.count(p);
+  Batch b{now(), events, what, mesh_.size(), kept, before.size()};
+  if (moved > 0) b.ops = upd_.last().ops, b.affected = upd_.last().affected;
   b.moved = moved;
   batches_.push_back(b);
 }

@@ -56,6 +56,7 @@ class KineticMesh {
   int bits_;
   Updater upd_;
   Mesh mesh_;
+  Dyadic mesh_time_{0};  // the time of mesh_'s positions
   std::vector<Certificate> certs_;  // of mesh_ and of S_N (the ρ certificates), polynomials of t − now
   std::size_t mesh_certs_ = 0;      // certs_[0, mesh_certs_) are about mesh_, the rest about S_N
   std::vector<Batch> batches_;
