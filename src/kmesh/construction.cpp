@@ -10,8 +10,6 @@
 namespace kmr::kmesh {
 namespace {
 
-Dyadic sqdist(const Point2& p, const Point2& q) { return geometry::squared_distance<2, Dyadic>(p, q); }
-
 // The nearest vertex of `cands` within k·2^l of p with top ≥ min_top (ties: smaller id), or −1.
 int nearest_within(const Spanner& S, const Point2& p, const std::vector<int>& cands, std::int64_t k, Rank l,
                    Rank min_top) {

@@ -10,6 +10,7 @@
 //  * mesh_at(t) for the current time t is the current mesh moved to t, and every certificate holds at t;
 //  * a batch is the set of certificates whose first sign change falls in one lattice interval;
 //  * collisions of two trajectories at a time in [now, T] are refused by check_collisions.
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -24,6 +25,8 @@ struct Batch {
   std::size_t events = 0;  // failing certificates in the interval (0 for an update)
   std::string what;        // "events", "insert" or "delete"
   std::size_t vertices = 0, steiner_kept = 0, steiner_before = 0;  // |M| after; Steiner positions kept
+  std::uint64_t ops = 0;   // kinetic KDS (kmesh/kds.hpp): Fig. 4.5's local operations for the batch
+  std::size_t affected = 0, moved = 0;  // satellites taken from the F_ℓ; nuclei relocated
 };
 
 class RebuildSimulation {

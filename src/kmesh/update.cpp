@@ -15,8 +15,8 @@ constexpr Rank kNoHighest = std::numeric_limits<Rank>::min() / 4;
 
 }  // namespace
 
-Updater::Updater(std::vector<InputPoint> points) {
-  Mesh m = construct(std::move(points));
+Updater::Updater(std::vector<InputPoint> points, const Dyadic& t) : now_(t) {
+  Mesh m = construct(std::move(points), t);
   const int n = static_cast<int>(m.n());
   std::vector<Point2> pts;
   for (int v = 0; v < n; ++v) {
@@ -286,15 +286,21 @@ void Updater::finish(std::uint64_t ops0) {
   for (auto& [k, st] : sats_) lowest_ = std::min(lowest_, std::get<0>(k));
 }
 
-void Updater::insert(const InputPoint& p) {
-  Point2 pos = scaled(p);
+std::map<int, Updater::Input>::iterator Updater::find_trajectory(const InputPoint& p) {
+  return std::find_if(inputs_.begin(), inputs_.end(), [&](auto& e) {
+    const InputPoint& q = e.second.p;
+    return q.x == p.x && q.y == p.y && q.vx == p.vx && q.vy == p.vy;
+  });
+}
+
+// Stage 1 of an insertion: S restricted to N, the activation ranks, and the balls the new vertex
+// falls into.
+void Updater::insert_stage1(const InputPoint& p) {
+  Point2 pos = scaled_at(p, now_);
   for (auto& [k, in] : inputs_)
     if (S_.position(in.s) == pos)
       throw InputError("insert of (" + p.x.str() + ", " + p.y.str() + "): the point is already in the input");
-  last_ = UpdateStats{};
-  std::uint64_t ops0 = S_.ops + SN_.ops;
   int key = next_key_++;
-  // Stage 1: S restricted to N, the activation ranks, and the balls the new vertex falls into.
   SN_.touched.clear();
   int sn = SN_.insert_point(pos);
   sn_to_key_[sn] = key;
@@ -307,21 +313,19 @@ void Updater::insert(const InputPoint& p) {
   t.push_back(sn);
   refresh_rhos(t);
   recompute_highest();
+}
+
+void Updater::insert(const InputPoint& p) {
+  last_ = UpdateStats{};
+  std::uint64_t ops0 = S_.ops + SN_.ops;
+  insert_stage1(p);
   finish(ops0);
 }
 
-void Updater::erase(const InputPoint& p) {
-  auto it = std::find_if(inputs_.begin(), inputs_.end(), [&](auto& e) {
-    const InputPoint& q = e.second.p;
-    return q.x == p.x && q.y == p.y && q.vx == p.vx && q.vy == p.vy;
-  });
-  if (it == inputs_.end()) throw InputError("delete of (" + p.x.str() + ", " + p.y.str() + "): not in the input");
-  if (inputs_.size() == 1) throw InputError("delete of the last input point");
-  last_ = UpdateStats{};
-  std::uint64_t ops0 = S_.ops + SN_.ops;
+// Stage 1 of a deletion: the satellites of the deleted vertex go (Remove), then the vertex itself.
+void Updater::erase_stage1(std::map<int, Input>::iterator it) {
   int key = it->first;
   Input in = it->second;
-  // Stage 1: the satellites of the deleted vertex go (Remove), then the vertex itself.
   if (by_nucleus_.count(key)) {
     std::vector<Key> mine(by_nucleus_[key].begin(), by_nucleus_[key].end());
     for (const Key& k : mine) {
@@ -345,20 +349,85 @@ void Updater::erase(const InputPoint& p) {
   sn_to_key_.erase(in.sn);
   refresh_rhos(SN_.touched);
   recompute_highest();
+}
+
+void Updater::erase(const InputPoint& p) {
+  auto it = find_trajectory(p);
+  if (it == inputs_.end()) throw InputError("delete of (" + p.x.str() + ", " + p.y.str() + "): not in the input");
+  if (inputs_.size() == 1) throw InputError("delete of the last input point");
+  last_ = UpdateStats{};
+  std::uint64_t ops0 = S_.ops + SN_.ops;
+  erase_stage1(it);
   finish(ops0);
+}
+
+void Updater::relocate(const std::vector<InputPoint>& moved) {
+  last_ = UpdateStats{};
+  std::uint64_t ops0 = S_.ops + SN_.ops;
+  std::vector<InputPoint> back;
+  for (const InputPoint& p : moved) {
+    auto it = find_trajectory(p);
+    KMR_CHECK(it != inputs_.end(), "relocate: a trajectory that is not in the input");
+    if (inputs_.size() == 1) break;  // the last point stays (a lone point has no certificate)
+    back.push_back(it->second.p);
+    erase_stage1(it);
+  }
+  propagate();
+  for (const InputPoint& p : back) {
+    insert_stage1(p);
+    propagate();
+  }
+  finish(ops0);
+}
+
+void Updater::advance_to(const Dyadic& t) {
+  KMR_CHECK(t >= now_, "advance_to: time runs backwards");
+  if (t == now_) return;
+  Dyadic dt = t - now_;
+  auto moved = [&](const Point2& p, const InputPoint& traj) {
+    return Point2{p[0] + Dyadic(traj.vx * kScale) * dt, p[1] + Dyadic(traj.vy * kScale) * dt};
+  };
+  std::vector<Point2> ps(S_.size());
+  for (int x = 0; x < static_cast<int>(S_.size()); ++x)
+    ps[x] = S_.alive(x) ? moved(S_.position(x), inputs_.at(info_[x].nucleus).p) : S_.position(x);
+  S_.move_to(ps);
+  std::vector<Point2> pn(SN_.size());
+  for (int x = 0; x < static_cast<int>(SN_.size()); ++x)
+    pn[x] = SN_.alive(x) ? moved(SN_.position(x), inputs_.at(sn_to_key_.at(x)).p) : SN_.position(x);
+  SN_.move_to(pn);
+  now_ = t;
+}
+
+std::vector<std::pair<Point2, int>> Updater::canonical_inputs() const {
+  std::vector<std::pair<Point2, int>> ins;
+  for (auto& [k, in] : inputs_) ins.push_back({S_.position(in.s), k});
+  std::sort(ins.begin(), ins.end());
+  return ins;
+}
+
+Mesh Updater::input_spanner_mesh() const {
+  Mesh m;
+  auto ins = canonical_inputs();
+  std::vector<int> new_id(SN_.size(), -1);
+  for (std::size_t i = 0; i < ins.size(); ++i) {
+    const Input& in = inputs_.at(ins[i].second);
+    new_id[in.sn] = static_cast<int>(i);
+    m.input.push_back(in.p);
+    m.info.push_back(VertexInfo{false, static_cast<int>(i), in.rho == kNoRank ? 0 : in.rho, -1});
+  }
+  m.spanner = SN_.compacted(new_id);
+  return m;
 }
 
 Mesh Updater::mesh() {
   Mesh m;
-  std::vector<std::pair<InputPoint, int>> ins;
-  for (auto& [k, in] : inputs_) ins.push_back({in.p, k});
-  std::sort(ins.begin(), ins.end(), [](auto& a, auto& b) { return a.first < b.first; });
+  auto ins = canonical_inputs();  // sorted by position at now (the construction's order at now)
   std::vector<int> new_id(S_.size(), -1);
   std::map<int, int> input_new;  // input key → new id
   for (std::size_t i = 0; i < ins.size(); ++i) {
     new_id[inputs_.at(ins[i].second).s] = static_cast<int>(i);
     input_new[ins[i].second] = static_cast<int>(i);
-    m.input.push_back(ins[i].first);
+    m.input.push_back(inputs_.at(ins[i].second).p);
   }
   const int n = static_cast<int>(ins.size());
   std::vector<std::pair<Key, int>> steiner;

@@ -45,11 +45,25 @@ struct UpdateStats {
 class Updater {
  public:
   // The construction of Fig. 4.2 (kmesh/construction.hpp) on static points, adopted as the state.
-  explicit Updater(std::vector<InputPoint> points);
+  // At time t (default 0) the points sit at their trajectories' positions at t (kmesh/kds.hpp moves
+  // them on with advance_to).
+  explicit Updater(std::vector<InputPoint> points, const Dyadic& t = Dyadic(0));
   // Fig. 4.5 for one dynamic change; InputError (nothing changed) for a duplicate or a missing point,
   // or the deletion of the last point.
   void insert(const InputPoint& p);
   void erase(const InputPoint& p);
+  // Fig. 4.5 for a kinetic batch at now() (kmesh/kds.hpp): the listed trajectories (the nuclei of the
+  // vertices of the failed certificates) leave together with their satellites (stage 1 of a deletion
+  // for all of them, then one propagation over the ranks), then come back one by one at their
+  // positions at now() (Fig. 4.5 insertions). Every certificate not about them must hold at now().
+  void relocate(const std::vector<InputPoint>& moved);
+  // Every vertex moves like its nucleus to its position at time t (≥ now()); nothing else changes
+  // (the structure stays valid while the certificates hold: L4.3.1).
+  void advance_to(const Dyadic& t);
+  const Dyadic& now() const { return now_; }
+  // S_N (the spanner over the input alone, whose minimum ranks are the activation ranks) as a mesh
+  // without satellites, numbered like mesh()'s inputs: its certificates are the kinetic ones of ρ.
+  Mesh input_spanner_mesh() const;
   // The current mesh, renumbered canonically (inputs sorted, then Steiner vertices by rank, nucleus,
   // ray), with its Delaunay triangulation (stage 3) and `considered` rebuilt from the records
   // (`existing` = the vertices of lower rank, so L4.2.5 reads as U2).
@@ -88,6 +102,10 @@ class Updater {
   void decide(const Key& k);
   void erase_record(const Key& k);
   void finish(std::uint64_t ops0);
+  std::map<int, Input>::iterator find_trajectory(const InputPoint& p);
+  void erase_stage1(std::map<int, Input>::iterator it);
+  void insert_stage1(const InputPoint& p);
+  std::vector<std::pair<Point2, int>> canonical_inputs() const;  // (position at now, key), sorted
 
   std::vector<InputPoint> sorted_;  // the live input (for messages and rebuilds)
   std::map<int, Input> inputs_;     // by input key (stable: the first ids are the sorted input)
@@ -101,6 +119,7 @@ class Updater {
   std::map<int, std::set<Key>> by_nucleus_;
   std::map<std::pair<Rank, int>, bool> before_;  // (rank, nucleus) → had a converted satellite there
   Rank lowest_ = 0, highest_ = 0;
+  Dyadic now_{0};
   UpdateStats last_;
   std::uint64_t total_ops_ = 0;
 };

@@ -90,6 +90,14 @@ printf '0 + 4 4 0 0\n0 - 5 1 0 0\n' >"$tmp/km10u.txt"
 "$kmr" kmesh "$tmp/km10.txt" --updates "$tmp/km10u.txt" --check --stats "$tmp/km10.json" >/dev/null 2>"$tmp/err"
 if [ $? -eq 0 ] && [ "$(grep -o '"repair": "fig4.5"' "$tmp/km10.json" | wc -l)" -eq 2 ]; then passed=$((passed+1)); else
   failed=$((failed+1)); echo "FAIL kmesh-updates-at-rest"; cat "$tmp/err"; fi
+# Moving points: the kinetic KDS repairs every batch by Fig. 4.5 (checked by --check, L4.3.1 included);
+# --rebuild runs the reference KDS instead.
+"$kmr" kmesh "$tmp/km6.txt" --until 0.25 --lattice-bits 2 --check --stats "$tmp/km11.json" >/dev/null 2>"$tmp/err"
+if [ $? -eq 0 ] && grep -qF '"repair": "fig4.5"' "$tmp/km11.json" && ! grep -qF '"repair": "rebuild"' "$tmp/km11.json"; then passed=$((passed+1)); else
+  failed=$((failed+1)); echo "FAIL kmesh-kinetic-fig4.5"; cat "$tmp/err"; fi
+"$kmr" kmesh "$tmp/km6.txt" --until 0.25 --lattice-bits 2 --rebuild --stats "$tmp/km12.json" >/dev/null 2>"$tmp/err"
+if [ $? -eq 0 ] && grep -qF '"repair": "rebuild"' "$tmp/km12.json"; then passed=$((passed+1)); else
+  failed=$((failed+1)); echo "FAIL kmesh-kinetic-rebuild"; cat "$tmp/err"; fi
 # (0,0) moving (1,1) meets (4,4) at t = 4: refused when T ≥ 4, accepted before.
 printf '0 0 1 1\n4 4\n' >"$tmp/km7.txt"
 expect_error kmesh-collision-later 'collide at time 4' -- kmesh "$tmp/km7.txt" --until 5
