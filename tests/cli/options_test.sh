@@ -135,6 +135,19 @@ expect_error ws3-update-twice "w3dup:2" -- wellspaced --dim 3 --updates "$tmp/w3
 printf '0 0 1 1\n5 5 0 0\n0 0 1 1\n' >"$tmp/km"
 expect_error kmesh-identical "identical trajectories" -- kmesh "$tmp/km" --until 1
 
+# --- hull --float on near-collinear points: the non-robust baseline may fail, but then with exit 3
+# and a message that says so and points to the exact mode, which must succeed on the same input.
+python3 -c "
+import random
+random.seed(5)
+for i in range(300):
+    t = random.random(); print(t, 2 * t + 1e-16 * random.random(), 3 * t + 1e-16 * random.random())
+print(0, 0, 1); print(1, 0, 0); print(0, 1, 0)" >"$tmp/nearline.xyz"
+"$kmr" hull "$tmp/nearline.xyz" >"$tmp/exact.json" 2>"$tmp/err" && grep -q '"vertices": \[' "$tmp/exact.json" && ok || bad "hull (exact) on near-collinear points: $(head -c 200 "$tmp/err")"
+"$kmr" hull "$tmp/nearline.xyz" --float >"$tmp/out" 2>"$tmp/err"; rc=$?
+if [ $rc -eq 0 ] || { [ $rc -eq 3 ] && grep -q 'the --float baseline failed (it is not robust; run without --float)' "$tmp/err"; }; then ok; else
+  bad "hull --float failure: rc=$rc $(head -c 200 "$tmp/err")"; fi
+
 # --- --svg on a failing run: a regular file is removed; a FIFO or a device never -----------------
 printf '0 0 0\n1 0 0\n0 1 0\n1 1 0\n' >"$tmp/flat.xyz"   # coplanar: `kmr hull` refuses it after opening --svg
 expect_error svg-regular "coplanar" -- hull "$tmp/flat.xyz" --svg "$tmp/p.svg"
