@@ -6,6 +6,7 @@ packages=(
   libboost-dev libgmp-dev libmpfr-dev libcgal-dev libeigen3-dev
   librapidcheck-dev libgtest-dev libgmock-dev libbenchmark-dev
   lcov clang-14 libclang-rt-14-dev llvm-14
+  python3
   libxml2-utils
   libqhull-dev
   cmark-gfm

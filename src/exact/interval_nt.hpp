@@ -117,6 +117,8 @@ class IntervalNT {
   // The neighbouring double of finite x toward +∞ (dir > 0) or −∞ (dir < 0).
   static double step(double x, int dir) {
     if (dir < 0) return -step(-x, 1);
+    // x == 0 is not reached today (a zero sum, product or quotient of doubles is exact, or is
+    // caught by the underflow guards of prod/quot first); kept so that step is right on its own.
     if (x == 0) return std::numeric_limits<double>::denorm_min();
     auto b = std::bit_cast<std::uint64_t>(x);
     return std::bit_cast<double>(x > 0 ? b + 1 : b - 1);

@@ -71,3 +71,18 @@ TEST(FilteredOrientation, OutsideTheSafeRangeGoesExact) {
   EXPECT_EQ(filtered_orientation(p, q, r, s), 1);
   EXPECT_EQ(filtered_orientation(p, r, q, s), -1);
 }
+
+TEST(FilteredOrientation, AnyOnePointOutsideTheSafeRangeGoesExact) {
+  // p, q, r, s = 0, e_x, e_y, e_z (orientation det I = +1), with one coordinate of one point set to
+  // ε = 2^-300 (outside the safe range): det becomes 1 − ε for p and stays 1 otherwise, by hand.
+  const double e = 0x1p-300;
+  const Point3d base[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const Point3d moved[4] = {{e, 0, 0}, {1, e, 0}, {e, 1, 0}, {0, e, 1}};
+  for (int i = 0; i < 4; ++i) {
+    Point3d u[4] = {base[0], base[1], base[2], base[3]};
+    u[i] = moved[i];
+    ASSERT_FALSE(filter_safe(u[i]));
+    EXPECT_EQ(filtered_orientation(u[0], u[1], u[2], u[3]), 1) << i;
+    EXPECT_EQ(filtered_orientation(u[0], u[2], u[1], u[3]), -1) << i;  // a swap flips the sign
+  }
+}

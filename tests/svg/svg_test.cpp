@@ -196,4 +196,51 @@ TEST(Plot, UndrawablePointsAreLeftOutAndCounted) {
   EXPECT_TRUE(xmllint_accepts(render(empty)));
 }
 
+
+// Issue 13 §2 (found by coverage/run.sh): the degenerate plots the audit can produce.
+TEST(Plot, ProportionalBoundSkipsPointsItCannotScale) {
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::nan("");
+  Series s{"m", {{0, 5}, {-1, 3}, {2, 4}, {4, 4}, {nan, 1}, {1, inf}, {inf, 1}}};
+  // only (2, 4) and (4, 4) count: ratios 2 and 1, drawn over x in [2, 4]
+  auto up = proportional_bound("c·x", s, true), down = proportional_bound("c·x", s, false);
+  ASSERT_TRUE(up && down);
+  ASSERT_EQ(up->points.size(), 2u);
+  EXPECT_EQ(up->points[0].x, 2);
+  EXPECT_EQ(up->points[0].y, 4);
+  EXPECT_EQ(up->points[1].x, 4);
+  EXPECT_EQ(up->points[1].y, 8);
+  EXPECT_EQ(down->points[0].y, 2);
+  EXPECT_EQ(down->points[1].y, 4);
+  EXPECT_FALSE(proportional_bound("none", Series{"m", {{0, 1}, {-2, 3}, {nan, 1}}}, true));
+  Series c = constant_bound("k", 3, 1, 5);
+  EXPECT_EQ(c.points.size(), 2u);
+  EXPECT_EQ(c.points[1].y, 3);
+}
+
+TEST(Plot, DegeneratePlotsDrawExactlyTheDrawablePoints) {
+  // One point (zero span on both axes), linear and log; a log axis with non-positive values (not
+  // drawable: counted in a note, never a marker or a NaN coordinate).
+  for (bool log : {false, true}) {
+    Plot p;
+    p.title = log ? "log" : "linear";
+    p.x = log ? log_axis("n") : linear_axis("n", "points");
+    p.y = log ? log_axis("t", "s") : linear_axis("t");
+    p.series = {{"one", {{10, 10}}}, {"bad", {{0, 1}, {5, -1}, {std::nan(""), 2}}}};
+    p.bounds = {constant_bound("k", 10, 10, 10)};
+    std::string s = render(p);
+    ASSERT_TRUE(xmllint_accepts(s)) << s;
+    EXPECT_EQ(s.find("nan"), std::string::npos) << s;
+    auto m = markers(s);
+    std::size_t want = log ? 1 : 3;  // linear: (0, 1) and (5, -1) are drawable, NaN never
+    ASSERT_EQ(m.size(), want) << p.title;
+    EXPECT_EQ(m[0].series, "one");
+    EXPECT_EQ(m[0].x, 10);
+    std::string note = log ? "3 point(s) not drawable" : "1 point(s) not drawable";  // log: x, y > 0 too
+    EXPECT_NE(s.find(note), std::string::npos) << p.title;
+  }
+  EXPECT_THROW(Document(0, 10), std::invalid_argument);
+  EXPECT_THROW(Document(10, -1), std::invalid_argument);
+  EXPECT_THROW(Document(std::nan(""), 10), std::invalid_argument);
+}
+
 }  // namespace
