@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <boost/multiprecision/gmp.hpp>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <random>
 
@@ -42,16 +44,38 @@ std::string fmt(const std::array<double, D>& p) {
 }
 
 template <std::size_t D>
-struct Half {  // a·x ≤ b
+struct Half {  // a·x ≤ b, with a, b rounded to doubles (ad, bd) for the filter of holds()
   V<D> a;
   Q b;
+  std::array<double, D> ad{};
+  double bd = 0;
+  void round() {
+    for (std::size_t i = 0; i < D; ++i) ad[i] = a[i].template convert_to<double>();
+    bd = b.template convert_to<double>();
+  }
 };
+
+// a·x ≤ b, exactly. Filter: with every input of the double sum rounded once (relative error
+// ≤ 2^-53) and ≤ 2D + 1 roundings in the sum, |error| ≤ 2^-50·(Σ|a_i x_i| + |b|) + 2^-1000
+// (underflow); the margin 2^-45 covers it. Values are ≤ a few units (points in [0,1]^D).
+template <std::size_t D>
+bool holds(const Half<D>& h, const V<D>& x, const std::array<double, D>& xd) {
+  double s = 0, m = std::fabs(h.bd);
+  for (std::size_t i = 0; i < D; ++i) {
+    s += h.ad[i] * xd[i];
+    m += std::fabs(h.ad[i] * xd[i]);
+  }
+  if (s <= h.bd - 0x1p-45 * m - 0x1p-1000) return true;
+  if (s >= h.bd + 0x1p-45 * m + 0x1p-1000) return false;
+  return dotq<D>(h.a, x) <= h.b;
+}
 
 template <std::size_t D>
 Half<D> bisector(const V<D>& u) {  // points at least as close to the origin as to u
   Half<D> h;
   for (std::size_t i = 0; i < D; ++i) h.a[i] = 2 * u[i];
   h.b = dotq<D>(u, u);
+  h.round();
   return h;
 }
 
@@ -103,13 +127,16 @@ template <std::size_t D>
 std::optional<V<D>> min_norm(Refs<D>& E, const Refs<D>& H, std::size_t n) {
   auto x = project<D>(E);
   if (!x) return x;
+  std::array<double, D> xd;
+  for (std::size_t i = 0; i < D; ++i) xd[i] = (*x)[i].template convert_to<double>();
   for (std::size_t i = 0; i < n; ++i) {
-    if (dotq<D>(H[i]->a, *x) <= H[i]->b) continue;
+    if (holds<D>(*H[i], *x, xd)) continue;
     if (E.size() == D) return std::nullopt;
     E.push_back(H[i]);
     x = min_norm<D>(E, H, i);
     E.pop_back();
     if (!x) return x;
+    for (std::size_t j = 0; j < D; ++j) xd[j] = (*x)[j].template convert_to<double>();
   }
   return x;
 }
@@ -188,6 +215,50 @@ bool for_subsets(const Refs<D>& F, std::size_t from, Refs<D>& S, Fn&& f) {
   return true;
 }
 
+// The vertices u ≠ v with |uv|² ≤ f·NN(v)² (f exact), relative to v, and NN(v)², exact. A double
+// filter only narrows the exact scan: with d̃ the double |uv|² (relative error ≤ ε = 2^-45 for
+// D ≤ 4, absolute ≤ δ = 2^-1000 from underflow), every u with |uv|² ≤ f·NN² has
+// d̃_u ≤ f·(d̃_min + δ)(1 + ε)/(1 − ε) + δ, which the threshold below exceeds.
+template <std::size_t D>
+struct Near {
+  std::optional<Q> nn2;
+  std::vector<std::size_t> idx;
+  std::vector<V<D>> q;
+};
+template <std::size_t D>
+Near<D> near(const std::vector<std::array<double, D>>& M, std::size_t v, const Q& f) {
+  std::vector<double> dd(M.size());
+  double dmin = std::numeric_limits<double>::infinity();
+  for (std::size_t u = 0; u < M.size(); ++u) {
+    double d = 0;
+    for (std::size_t i = 0; i < D; ++i) d += (M[u][i] - M[v][i]) * (M[u][i] - M[v][i]);
+    dd[u] = d;
+    if (u != v) dmin = std::min(dmin, d);
+  }
+  Near<D> out;
+  if (M.size() < 2) return out;
+  const double delta = 0x1p-1000;
+  auto threshold = [&](double factor) { return factor * (1 + 0x1p-30) * (dmin + delta) * (1 + 0x1p-30) + delta; };
+  const double t1 = threshold(1), tf = threshold(f.convert_to<double>() * (1 + 0x1p-30));
+  std::vector<std::pair<std::size_t, Q>> cand;
+  for (std::size_t u = 0; u < M.size(); ++u) {
+    if (u == v || !(dd[u] <= std::max(t1, tf))) continue;
+    const V<D> x = rel<D>(M[u], M[v]);
+    const Q d = dotq<D>(x, x);
+    if (dd[u] <= t1 && (!out.nn2 || d < *out.nn2)) out.nn2 = d;
+    cand.emplace_back(u, d);
+    out.q.push_back(x);
+  }
+  std::vector<V<D>> q;
+  for (std::size_t j = 0; j < cand.size(); ++j)
+    if (cand[j].second <= f * *out.nn2) {
+      out.idx.push_back(cand[j].first);
+      q.push_back(out.q[j]);
+    }
+  out.q = std::move(q);
+  return out;
+}
+
 }  // namespace
 
 // Vor(v) ∩ [0,1]^D ⊆ B(v, R), R = ρ·NN: only vertices u with |uv| ≤ 2R can cut B(v, R), and the
@@ -199,16 +270,11 @@ bool for_subsets(const Refs<D>& F, std::size_t from, Refs<D>& S, Fn&& f) {
 template <std::size_t D>
 bool is_well_spaced(const std::vector<std::array<double, D>>& M, double rho, std::string* why) {
   for (std::size_t v = 0; v < M.size(); ++v) {
-    std::vector<V<D>> q;
-    std::optional<Q> nn2;
-    for (std::size_t u = 0; u < M.size(); ++u) {
-      q.push_back(rel<D>(M[u], M[v]));
-      if (u == v) continue;
-      Q d = dotq<D>(q[u], q[u]);
-      if (!nn2 || d < *nn2) nn2 = d;
-    }
-    if (!nn2) continue;
-    const Q R2 = Q(rho) * Q(rho) * *nn2;
+    const Q rho2 = Q(rho) * Q(rho);
+    const Near<D> nb = near<D>(M, v, 4 * rho2);
+    if (!nb.nn2) continue;
+    const auto& nn2 = nb.nn2;
+    const Q R2 = rho2 * *nn2;
     std::vector<Half<D>> hs;
     for (std::size_t i = 0; i < D; ++i) {
       Half<D> lo, hi;  // −x_i ≤ v_i and x_i ≤ 1 − v_i
@@ -217,11 +283,12 @@ bool is_well_spaced(const std::vector<std::array<double, D>>& M, double rho, std
       lo.b = Q(M[v][i]);
       hi.a[i] = 1;
       hi.b = 1 - Q(M[v][i]);
+      lo.round();
+      hi.round();
       hs.push_back(lo);
       hs.push_back(hi);
     }
-    for (std::size_t u = 0; u < M.size(); ++u)
-      if (u != v && dotq<D>(q[u], q[u]) <= 4 * R2) hs.push_back(bisector<D>(q[u]));
+    for (const auto& x : nb.q) hs.push_back(bisector<D>(x));  // |uv| ≤ 2R
     const Refs<D> all = shuffled<D>(hs);
     Refs<D> facets;
     for (std::size_t c = 0; c < all.size(); ++c) {
@@ -311,24 +378,14 @@ bool is_size_conforming(const std::vector<std::array<double, D>>& N, const std::
 // dropping them changes neither "some face point within r" nor "none".
 template <std::size_t D>
 std::vector<std::size_t> clipped_voronoi_neighbors(const std::vector<std::array<double, D>>& M, std::size_t v, double beta) {
-  std::vector<V<D>> q;
-  std::optional<Q> nn2;
-  for (std::size_t u = 0; u < M.size(); ++u) {
-    q.push_back(rel<D>(M[u], M[v]));
-    if (u == v) continue;
-    Q d = dotq<D>(q[u], q[u]);
-    if (!nn2 || d < *nn2) nn2 = d;
-  }
   std::vector<std::size_t> out;
-  if (!nn2) return out;
-  const Q r2 = Q(beta) * Q(beta) * *nn2;
-  std::vector<std::size_t> cand;
+  const Q beta2 = Q(beta) * Q(beta);
+  const Near<D> nb = near<D>(M, v, 4 * beta2);  // |uv| ≤ 2r, r = β·NN
+  if (!nb.nn2) return out;
+  const Q r2 = beta2 * *nb.nn2;
+  const std::vector<std::size_t>& cand = nb.idx;
   std::vector<Half<D>> hs;
-  for (std::size_t u = 0; u < M.size(); ++u)
-    if (u != v && dotq<D>(q[u], q[u]) <= 4 * r2) {
-      cand.push_back(u);
-      hs.push_back(bisector<D>(q[u]));
-    }
+  for (const auto& x : nb.q) hs.push_back(bisector<D>(x));
   const Refs<D> order = shuffled<D>(hs);
   for (std::size_t i = 0; i < cand.size(); ++i) {
     Refs<D> E{&hs[i]}, H;
