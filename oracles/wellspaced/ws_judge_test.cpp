@@ -19,6 +19,7 @@
 
 #include "wellspaced/generators.hpp"
 #include "wellspaced/well_spaced_set.hpp"
+#include "wsjudge/brute_force.hpp"
 #include "ws_generators.hpp"
 #include "ws_oracle.hpp"
 
@@ -199,8 +200,8 @@ ScanCounts expect_scan_matches_oracle(const std::vector<ws::DPoint<D>>& in, cons
     auto want = O.beta_neighbors(v, Dyadic::from_double(beta), kLibraryConvention);
     EXPECT_EQ(neighbour_mismatch(scan_indices<D>(S, M, v), want), "")
         << what << ": scan vs oracle at vertex " << v << " (β = " << beta << ", |M| = " << M.size() << ")";
-    EXPECT_EQ(neighbour_mismatch(lib::brute_clipped_voronoi_neighbors<D>(M, v, beta), want), "")
-        << what << ": library brute force vs oracle at vertex " << v;
+    EXPECT_EQ(neighbour_mismatch(kmr::wsjudge::clipped_voronoi_neighbors<D>(M, v, beta), want), "")
+        << what << ": brute-force judge (wsjudge) vs oracle at vertex " << v;
     if (::testing::Test::HasFailure()) return n;
     ++n.vertices;
     n.neighbours += want.size();

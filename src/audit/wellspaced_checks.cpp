@@ -12,6 +12,7 @@
 #include "wellspaced/generators.hpp"
 #include "wellspaced/measure.hpp"
 #include "wellspaced/well_spaced_set.hpp"
+#include "wsjudge/brute_force.hpp"
 
 namespace kmr::audit {
 namespace {
@@ -48,7 +49,7 @@ Verdict t334(const Options& o) {
     std::vector<Point<2>> M;
     for (auto& x : ws.vertices()) M.push_back(x.x);
     ++total;
-    ok += is_well_spaced<2>(M, ws.params().rho) && is_size_conforming<2>(in, M, ws.params().rho);
+    ok += kmr::wsjudge::is_well_spaced<2>(M, ws.params().rho) && kmr::wsjudge::is_size_conforming<2>(in, M, ws.params().rho);
     v.figure(std::string("2D ") + gen::name(k) + " |M|/|N|", fmt(double(M.size()) / in.size()));
   }
   {
@@ -57,7 +58,7 @@ Verdict t334(const Options& o) {
     std::vector<Point<3>> M;
     for (auto& x : ws.vertices()) M.push_back(x.x);
     ++total;
-    ok += is_well_spaced<3>(M, ws.params().rho) && is_size_conforming<3>(in, M, ws.params().rho);
+    ok += kmr::wsjudge::is_well_spaced<3>(M, ws.params().rho) && kmr::wsjudge::is_size_conforming<3>(in, M, ws.params().rho);
     v.figure("3D uniform |M|/|N|", fmt(double(M.size()) / in.size()));
   }
   v.pass = ok == total;

@@ -127,6 +127,7 @@ class Quadtree {
             if (!(m == c) && cnt.count(m)) crowded = true;
           });
         if (crowded) {
+          // leaves are at most at level kMaxLevel (the same condition in update())
           if (L >= kMaxLevel) throw InputError("points too close together: the 2^D-tree would exceed depth " + std::to_string(kMaxLevel));
           internal_.emplace(c, 0);
           next.push_back(p);
@@ -260,8 +261,10 @@ class Quadtree {
     if (sign > 0) {
       int L = 0;
       while (crowded_new(cell_of<D>(p, L))) {
+        // the condition of build(): a crowded cell at level ≥ kMaxLevel would make leaves deeper
+        // than kMaxLevel (test WellspacedQuadtree.DepthLimitSameForBuildAndInsert)
+        if (L >= kMaxLevel) throw InputError("point too close to another: the 2^D-tree would exceed depth " + std::to_string(kMaxLevel));
         ++L;
-        if (L > kMaxLevel) throw InputError("point too close to another: the 2^D-tree would exceed depth " + std::to_string(kMaxLevel));
       }
       lmax = L + 1;
     } else {

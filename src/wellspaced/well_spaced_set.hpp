@@ -142,19 +142,7 @@ class WellSpacedSet {
   std::unique_ptr<Impl> impl_;
 };
 
-// Exact brute-force checks (no quadtree, no scan): used by tests and the audit.
-// ρ-well-spacedness of M (Vor_M(v) ∩ [0,1]^D ⊆ closed ball(v, ρ·NN_M(v)) for all v).
-// On failure, *why names a violating vertex.
-template <std::size_t D>
-bool is_well_spaced(const std::vector<Point<D>>& M, double rho, std::string* why = nullptr);
-// Size-conformity NN_M(v) ≥ lfs_N(v)/c with c = 2ρ/(ρ−1) (Lemma 3.3.3), lfs w.r.t. input N.
-template <std::size_t D>
-bool is_size_conforming(const std::vector<Point<D>>& N, const std::vector<Point<D>>& M, double rho,
-                        std::string* why = nullptr);
-// β-clipped Voronoi neighbours of M[v] among all of M (indices, sorted): u is one iff some ball
-// with M[v], M[u] on its boundary, no vertex of M inside, has radius ≤ β·NN_M(M[v]).
-template <std::size_t D>
-std::vector<std::size_t> brute_clipped_voronoi_neighbors(const std::vector<Point<D>>& M, std::size_t v,
-                                                         double beta);
+// The exact brute-force judges of the output (is_well_spaced, is_size_conforming, the β-clipped
+// Voronoi neighbours) are in src/wsjudge/brute_force.hpp: they share no code with this layer.
 
 }  // namespace kmr::wellspaced

@@ -177,3 +177,47 @@ TEST(WellspacedQuadtree, RefusesPointsBeyondDepthLimit) {
   std::vector<Point<2>> pts{{0.5, 0.5}, {0.5 + std::ldexp(1.0, -60), 0.5}};
   EXPECT_THROW(T.build(pts), kmr::InputError);
 }
+
+// Issue 11 §5: build and insert refuse at the same depth. Two points 2^-55 apart near 1/8 (the
+// double spacing there) are crowded up to level 55 = kMaxLevel − 1, so their leaves are at level
+// kMaxLevel exactly: accepted by both paths, with equal trees. Two points 2^-56 apart near 1/16
+// are crowded at level kMaxLevel, so leaves would be at kMaxLevel + 1: refused by both paths
+// (insert leaves the tree unchanged).
+template <std::size_t D>
+void depth_boundary_case(double a, double step, bool accepted) {
+  Point<D> p{}, q{};
+  p.fill(0.75);
+  q.fill(0.75);
+  p[0] = a;
+  q[0] = a + step;
+  std::vector<Point<D>> base{p, Point<D>{}};  // the origin keeps two inputs before the insertion
+  base[1].fill(0.0);
+  Quadtree<D> built;
+  std::vector<Point<D>> all{p, q, base[1]};
+  auto leaf_input = [&](const Key<D>& l) -> const Point<D>* {
+    for (auto& x : base)
+      if (cell_contains<D>(l, x)) return &x;
+    return nullptr;
+  };
+  Quadtree<D> ins;
+  ins.build(base);
+  const auto before = ins.internal_nodes();
+  if (accepted) {
+    built.build(all);
+    ins.update(q, +1, leaf_input);
+    EXPECT_EQ(ins.internal_nodes(), built.internal_nodes()) << D << "D";
+    int deepest = 0;
+    for (const auto& l : built.leaves()) deepest = std::max(deepest, l.level);
+    EXPECT_EQ(deepest, kMaxLevel) << D << "D: the pair should need exactly kMaxLevel levels";
+  } else {
+    EXPECT_THROW(built.build(all), kmr::InputError) << D << "D build";
+    EXPECT_THROW(ins.update(q, +1, leaf_input), kmr::InputError) << D << "D insert";
+    EXPECT_EQ(ins.internal_nodes(), before) << D << "D: a refused insertion changed the tree";
+  }
+}
+TEST(WellspacedQuadtree, DepthLimitSameForBuildAndInsert) {
+  depth_boundary_case<2>(0.125, std::ldexp(1.0, -55), true);
+  depth_boundary_case<2>(0.0625, std::ldexp(1.0, -56), false);
+  depth_boundary_case<3>(0.125, std::ldexp(1.0, -55), true);
+  depth_boundary_case<3>(0.0625, std::ldexp(1.0, -56), false);
+}

@@ -1,5 +1,5 @@
-// StableWS (Fig. 3.4) and its updates (Fig. 3.8), judged by the library's exact brute force
-// (Voronoi cells of all vertices clipped to the domain, no quadtree, no scan) and by from-scratch runs.
+// StableWS (Fig. 3.4) and its updates (Fig. 3.8), judged by the exact brute force of src/wsjudge
+// (no quadtree, no scan, no code shared with the library) and by from-scratch runs.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,13 +9,17 @@
 #include <chrono>
 #include <cstdio>
 #include <random>
+#include <cmath>
 
 #include "exact/dyadic.hpp"
 #include "exact/error.hpp"
 #include "wellspaced/generators.hpp"
 #include "wellspaced/well_spaced_set.hpp"
+#include "wsjudge/brute_force.hpp"
 
 using namespace kmr::wellspaced;
+using kmr::wsjudge::is_well_spaced;
+using kmr::wsjudge::is_size_conforming;
 
 namespace {
 
@@ -60,7 +64,7 @@ void clipped_case(gen::Kind k, std::size_t n, std::uint64_t seed, std::size_t sa
     std::size_t v = rng() % M.size();
     auto scan = ws.clipped_voronoi_neighbors(M[v]);
     std::vector<Point<D>> brute;
-    for (auto u : brute_clipped_voronoi_neighbors<D>(M, v, ws.params().beta)) brute.push_back(M[u]);
+    for (auto u : kmr::wsjudge::clipped_voronoi_neighbors<D>(M, v, ws.params().beta)) brute.push_back(M[u]);
     std::sort(brute.begin(), brute.end());
     EXPECT_EQ(scan, brute) << gen::name(k) << " D=" << D << " vertex " << v;
   }
@@ -549,4 +553,80 @@ TEST(WellspacedStatic, NearDuplicatePairOneUlpApartHasNoDoubleSteinerVertex) {
   } catch (const kmr::ContractError& e) {
     EXPECT_NE(std::string(e.what()).find("none lies in the picking region"), std::string::npos) << e.what();
   }
+}
+
+// The brute-force judges of src/wsjudge against hand-derived values (they share no code with the
+// library, so these are what make their verdicts trustworthy; the CGAL oracle cross-checks the
+// neighbour judge too: WsJudge.L3_2_1_ClippedVoronoiScanAgreesWithOracle).
+// Two points v = (½, …, ½), u = v + ⅛e_1: Vor(v) ∩ [0,1]^D = {x_1 ≤ 9/16}, farthest from v at the
+// corners x_1 = 0 (|xv|² = D/4), NN² = 1/64; Vor(u)'s corners are nearer. So the set is
+// ρ-well-spaced iff ρ² ≥ 16·D: ρ* = 4√D.
+template <std::size_t D>
+void judge_two_points_case() {
+  Point<D> v, u;
+  v.fill(0.5);
+  u = v;
+  u[0] = 0.625;
+  const double rho_star = 4 * std::sqrt(double(D));
+  const double below = std::nextafter(rho_star, 0.0), above = std::nextafter(rho_star, 10.0);
+  // rho_star is rounded: decide which double side is exact by ρ² vs 16·D in exact dyadics
+  auto ge = [](double r) { return kmr::exact::Dyadic::from_double(r) * kmr::exact::Dyadic::from_double(r) >= kmr::exact::Dyadic(16 * int(D)); };
+  for (double r : {below, rho_star, above, 2.0, 10.0})
+    EXPECT_EQ(is_well_spaced<D>({v, u}, r), ge(r)) << D << "D, rho = " << r;
+}
+TEST(WsJudgeBruteForce, WellSpacedTwoPointsHandDerived) {
+  judge_two_points_case<2>();
+  judge_two_points_case<3>();
+  judge_two_points_case<4>();
+}
+// v = (½, ½), a = v + (1/16, 0) (NN = 1/16), w = v + (0, h): the face of Vor(v) on the bisector of
+// v, w is nearest to v at v + (0, h/2) (a's bisector x = ½ + 1/32 does not cut it), so w is a
+// β-clipped neighbour iff h/2 ≤ β/16: with β = 3, iff h ≤ 3/8 (closed). a always is. In 3D the
+// same with a third coordinate ½.
+template <std::size_t D>
+void judge_neighbour_case() {
+  for (double h : {0.375, 0.375 + 0x1p-20, 0.25, 0.4375}) {
+    Point<D> v, a, w;
+    v.fill(0.5);
+    a = v;
+    a[0] += 1.0 / 16;
+    w = v;
+    w[1] += h;
+    std::vector<std::size_t> want{1};
+    if (h <= 0.375) want.push_back(2);
+    EXPECT_EQ(kmr::wsjudge::clipped_voronoi_neighbors<D>({v, a, w}, 0, 3.0), want) << D << "D, h = " << h;
+  }
+  // a square of side s around v's corner: the four sites are cocircular with v's cell corner
+  // (degenerate); the diagonal site shares only a vertex of the cell, at distance s/√2 · … :
+  // v = (¼, ¼), others at (¼+s, ¼), (¼, ¼+s), (¼+s, ¼+s); the diagonal's face is the single
+  // point v + (s/2, s/2), |·| = s/√2, NN = s, so it is a neighbour iff β ≥ 1/√2 (always here).
+  if constexpr (D == 2) {
+    const double s = 1.0 / 8;
+    std::vector<Point<2>> M{{0.25, 0.25}, {0.25 + s, 0.25}, {0.25, 0.25 + s}, {0.25 + s, 0.25 + s}};
+    EXPECT_EQ(kmr::wsjudge::clipped_voronoi_neighbors<2>(M, 0, 1.5), (std::vector<std::size_t>{1, 2, 3}));
+    EXPECT_EQ(kmr::wsjudge::clipped_voronoi_neighbors<2>(M, 0, 0.70703125), (std::vector<std::size_t>{1, 2}));  // < 1/√2
+    EXPECT_EQ(kmr::wsjudge::clipped_voronoi_neighbors<2>(M, 0, 0.70715332), (std::vector<std::size_t>{1, 2, 3}));  // > 1/√2
+  }
+}
+TEST(WsJudgeBruteForce, ClippedNeighboursHandDerived) {
+  judge_neighbour_case<2>();
+  judge_neighbour_case<3>();
+}
+// Removing the Steiner vertices of a real output leaves a set that is not well-spaced (grid input
+// at ρ = 1.5 has fills), and a vertex moved onto another's bisector breaks size conformity.
+TEST(WsJudgeBruteForce, RejectsOutputWithoutItsSteinerVertices) {
+  auto input = gen::points<2>(gen::Kind::uniform, 20, 7);
+  WellSpacedSet<2> ws(input);
+  std::vector<Point<2>> M, inputs_only;
+  for (const auto& v : ws.vertices()) {
+    M.push_back(v.x);
+    if (!v.is_steiner) inputs_only.push_back(v.x);
+  }
+  ASSERT_GT(M.size(), inputs_only.size());
+  EXPECT_TRUE(is_well_spaced<2>(M, 1.5));
+  EXPECT_FALSE(is_well_spaced<2>(inputs_only, 1.5));
+  // a point at 2^-20 from an input vertex: NN tiny against lfs of the input
+  auto M2 = M;
+  M2.push_back({M[0][0] + (M[0][0] < 0.5 ? 0x1p-20 : -0x1p-20), M[0][1]});
+  EXPECT_FALSE(is_size_conforming<2>(input, M2, 1.5));
 }

@@ -5,6 +5,7 @@
 
 #include "kinetic/kinetic_sort.hpp"
 #include "wellspaced/well_spaced_set.hpp"
+#include "wsjudge/brute_force.hpp"
 
 int main() {
   using namespace kmr::wellspaced;
@@ -16,7 +17,7 @@ int main() {
     M.push_back(v.x);
     inputs += !v.is_steiner;
   }
-  if (inputs != in.size() || !is_well_spaced<2>(M, ws.params().rho)) return 1;
+  if (inputs != in.size() || !kmr::wsjudge::is_well_spaced<2>(M, ws.params().rho)) return 1;
   std::printf("wellspaced ok %zu\n", M.size());
   // x0 = 0 moving right at speed 1, x1 = 1 standing still: one swap at t = 1.
   using kmr::kinetic::Polynomial;
