@@ -424,8 +424,9 @@ std::size_t check_same_colour_fills(const WellSpacedSet<D>& ws, const std::strin
           EXPECT_TRUE(farther_than(w, u->v, 2, beta, rho, v->rank)) << what << ": Steiner vertex of " << v->name << " within 2βρ^{r+1} of " << u->name;
         // the proof's distance bound, for pairs where v was not ρ-well-spaced (it inserted vertices;
         // two well-spaced vertices are independent trivially and may share a tile)
-        if (!v->steiner.empty())
+        if (!v->steiner.empty()) {
           EXPECT_TRUE(farther_than(v->v, u->v, 3, beta, rho, v->rank)) << what << ": " << v->name << ", " << u->name;
+        }
       }
   return pairs;
 }
