@@ -8,7 +8,9 @@
 #   GTEST_TOTAL_SHARDS=4 GTEST_SHARD_INDEX=$i scripts/campaign.sh --seeds 50 --max-success 2000
 # Every failure prints the test, its seed and the exact replay command; exit 1 if any failed.
 # Defaults: 20 seeds from 1, max_success 1000, max_size 200 (CI: seed 20121, max_success 100,
-# RapidCheck's default max_size 100). Build first with scripts/build.sh.
+# RapidCheck's default max_size 100). Properties that cap their cases for CI (proptests/check_cases.hpp)
+# scale those caps by max_success/100 and max_size/100 here (KMR_CAMPAIGN=1). Build first with
+# scripts/build.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seeds=20 first=1 max_success=1000 max_size=200 filter='*' dir=build
@@ -39,13 +41,13 @@ for ((seed = first; seed < first + seeds; ++seed)); do
   params="seed=$seed max_success=$max_success max_size=$max_size verbose_progress=0"
   for bin in "${bins[@]}"; do
     runs=$((runs + 1))
-    if RC_PARAMS="$params" "$bin" --gtest_filter="$filter" >"$log" 2>&1; then continue; fi
+    if KMR_CAMPAIGN=1 RC_PARAMS="$params" "$bin" --gtest_filter="$filter" >"$log" 2>&1; then continue; fi
     mapfile -t failed < <(sed -n 's/^\[  FAILED  \] \([^ ,]*\).*/\1/p' "$log" | grep -v 'listed below' | grep '\.' | sort -u)
     ((${#failed[@]})) || failed=("(whole binary: exit status, see output)")
     for t in "${failed[@]}"; do
       failures=$((failures + 1))
       echo "FAIL $t  seed=$seed"
-      echo "  replay: RC_PARAMS=\"$params\" $bin --gtest_filter='$t'"
+      echo "  replay: KMR_CAMPAIGN=1 RC_PARAMS=\"$params\" $bin --gtest_filter='$t'"
     done
     grep -E 'Falsifiable|reproduce=' "$log" | sed 's/^/  /' || true
   done

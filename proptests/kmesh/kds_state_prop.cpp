@@ -18,6 +18,7 @@
 
 #include "kmesh/invariants.hpp"
 #include "kmesh/kds.hpp"
+#include "../check_cases.hpp"
 
 using namespace kmr::kmesh;
 using kmr::exact::Integer;
@@ -147,26 +148,11 @@ std::vector<InputPoint> initial() {
   return v;
 }
 
-// At most `cases` sequences of at most `length` commands (each batch is checked by brute force).
-template <class F>
-void check_cases(int cases, int length, F f) {
-  auto params = rc::detail::configuration().testParams;
-  params.maxSuccess = std::min(params.maxSuccess, cases);
-  params.maxSize = std::min(params.maxSize, length);
-  rc::detail::TestMetadata md;
-  md.id = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  md.description = md.id;
-  auto result = rc::detail::checkProperty(rc::detail::toProperty(f), md, params);
-  std::ostringstream ss;
-  rc::detail::printResultMessage(result, ss);
-  if (!result.template is<rc::detail::SuccessResult>()) FAIL() << ss.str();
-}
-
 }  // namespace
 
 TEST(KmeshKdsStateProp, L4_3_1_KineticBatchesInsertionsAndDeletionsKeepTheInvariants) {
   RecordProperty("claim", "L4.3.1");
-  check_cases(3, 3, [] {
+  kmr::proptest::check_cases(3, 3, [] {
     Model m{initial()};
     Sut s{std::make_unique<KineticMesh>(m.points, kBits)};
     verify(*s.k, m);

@@ -14,6 +14,7 @@
 
 #include "kmesh/invariants.hpp"
 #include "kmesh/update.hpp"
+#include "../check_cases.hpp"
 
 using namespace kmr::kmesh;
 using kmr::exact::Integer;
@@ -106,25 +107,10 @@ std::vector<InputPoint> initial() {
   return v;
 }
 
-// At most `cases` sequences of at most `length` commands (each update is checked by brute force).
-template <class F>
-void check_cases(int cases, int length, F f) {
-  auto params = rc::detail::configuration().testParams;
-  params.maxSuccess = std::min(params.maxSuccess, cases);
-  params.maxSize = std::min(params.maxSize, length);
-  rc::detail::TestMetadata md;
-  md.id = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  md.description = md.id;
-  auto result = rc::detail::checkProperty(rc::detail::toProperty(f), md, params);
-  std::ostringstream ss;
-  rc::detail::printResultMessage(result, ss);
-  if (!result.template is<rc::detail::SuccessResult>()) FAIL() << ss.str();
-}
-
 }  // namespace
 
 TEST(KmeshUpdateStateProp, L4_3_2_InsertionsAndDeletionsKeepTheInvariants) {
-  check_cases(3, 4, [] {
+  kmr::proptest::check_cases(3, 4, [] {
     Model m{initial()};
     Sut s{std::make_unique<Updater>(m.points)};
     rc::state::check(m, s, rc::state::gen::execOneOfWithArgs<Insert, Insert, Delete>());

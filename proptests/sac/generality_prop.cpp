@@ -14,6 +14,7 @@
 #include <memory>
 
 #include "sacprograms/generality.hpp"
+#include "../check_cases.hpp"
 
 using namespace kmr::sacprograms;
 using kmr::sac::HookId;
@@ -160,7 +161,6 @@ void apply_edit(const Edit& e, const Model& m, Sut& s) {
   else s.inst.owner->flip(input_cell_name(m.ids[e.pos]));  // the owner sets its certificate
 }
 
-
 // Shrinking drops commands, so a later edit's position may no longer exist: such sequences are
 // skipped (rc::state preconditions), never applied out of range.
 bool edit_fits(const Edit& e, std::size_t& size) {
@@ -244,42 +244,27 @@ void check(Prog p, std::size_t max_n, int min_commands) {
   RC_CLASSIFY(st.hooks_run > 0, "undo hooks run");
 }
 
-// Runs a property with at most `cases` successful cases (the suite-wide RC_PARAMS seed still
-// applies, so a failure replays with the printed seed).
-template <class F>
-void check_cases(int cases, F f) {
-  auto params = rc::detail::configuration().testParams;
-  params.maxSuccess = std::min(params.maxSuccess, cases);
-  rc::detail::TestMetadata md;
-  md.id = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  md.description = md.id;
-  auto result = rc::detail::checkProperty(rc::detail::toProperty(f), md, params);
-  std::ostringstream ss;
-  rc::detail::printResultMessage(result, ss);
-  if (!result.template is<rc::detail::SuccessResult>()) FAIL() << ss.str();
-}
-
 // §1 item 1 (+2): certificates created in the run under a key, flipped by their owner.
 RC_GTEST_PROP(SacGeneralityProp, S1_3_CertificatesCreatedInRunAndFlippedFromOutside, ()) {
   check(Prog::CertifiedFilter, 40, 0);
 }
 // §1 item 2: long runs stress re-registration; hook order and identity are checked after each.
 TEST(SacGeneralityProp, S1_3_UndoHooksRunInTimeOrderAndKeepIdentity) {
-  check_cases(25, [] { check(Prog::CertifiedFilter, 200, 50); });
+  kmr::proptest::check_cases(25, [] { check(Prog::CertifiedFilter, 200, 50); });
 }
 // §1 item 3 (+ repeated memo keys): destination-passing memo whose result depends on reads.
 RC_GTEST_PROP(SacGeneralityProp, S1_3_DestinationMemoWithRepeatedKeysEqualsFromScratch, ()) {
   check(Prog::NextGreater, 40, 0);
 }
 TEST(SacGeneralityProp, S1_3_DestinationMemoLongRuns) {
-  check_cases(10, [] { check(Prog::NextGreater, 120, 50); });
+  kmr::proptest::check_cases(10, [] { check(Prog::NextGreater, 120, 50); });
 }
 // §1 item 4: a write that moves earlier during re-execution.
 RC_GTEST_PROP(SacGeneralityProp, S1_3_WriteMovingEarlierEqualsFromScratch, ()) {
   check(Prog::FirstPositive, 40, 0);
 }
 TEST(SacGeneralityProp, S1_3_WriteMovingEarlierLongRuns) {
-  check_cases(25, [] { check(Prog::FirstPositive, 200, 50); });
+  kmr::proptest::check_cases(25, [] { check(Prog::FirstPositive, 200, 50); });
 }
 
 }  // namespace

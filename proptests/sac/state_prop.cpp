@@ -12,6 +12,7 @@
 
 #include "sacprograms/exptree.hpp"
 #include "sacprograms/session.hpp"
+#include "../check_cases.hpp"
 
 using namespace kmr::sacprograms;
 
@@ -78,7 +79,6 @@ void apply_edit(const Edit& e, ListSession& s) {
 }
 
 bool g_points = false;  // set per property before rc::state::check
-
 
 // Shrinking drops commands, so a later edit's position may no longer exist: such sequences are
 // skipped (rc::state preconditions), never applied out of range.
@@ -162,20 +162,6 @@ void check_program(const std::string& name, std::size_t max_n = 39, int min_comm
   rc::state::check(m, sut, rc::state::gen::execOneOfWithArgs<OneEdit, OneEdit, Batch>());
 }
 
-// Runs a property with at most `cases` successful cases (the suite-wide RC_PARAMS seed applies).
-template <class F>
-void check_cases(int cases, F f) {
-  auto params = rc::detail::configuration().testParams;
-  params.maxSuccess = std::min(params.maxSuccess, cases);
-  rc::detail::TestMetadata md;
-  md.id = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  md.description = md.id;
-  auto result = rc::detail::checkProperty(rc::detail::toProperty(f), md, params);
-  std::ostringstream ss;
-  rc::detail::printResultMessage(result, ss);
-  if (!result.template is<rc::detail::SuccessResult>()) FAIL() << ss.str();
-}
-
 RC_GTEST_PROP(SacStateProp, S1_3_MapPropagationEqualsFromScratch, ()) { check_program("map"); }
 RC_GTEST_PROP(SacStateProp, S1_3_FilterPropagationEqualsFromScratch, ()) { check_program("filter"); }
 RC_GTEST_PROP(SacStateProp, S1_3_SumPropagationEqualsFromScratch, ()) { check_program("sum"); }
@@ -184,12 +170,12 @@ RC_GTEST_PROP(SacStateProp, S1_3_MergesortPropagationEqualsFromScratch, ()) { ch
 RC_GTEST_PROP(SacStateProp, S1_3_QuickhullPropagationEqualsFromScratch, ()) { check_program("quickhull"); }
 
 // Long runs: ≥ 50 commands on inputs of up to 200 elements (fewer cases for the Θ(n log n) traces).
-TEST(SacStateProp, S1_3_MapLongRuns) { check_cases(15, [] { check_program("map", 200, 50); }); }
-TEST(SacStateProp, S1_3_FilterLongRuns) { check_cases(15, [] { check_program("filter", 200, 50); }); }
-TEST(SacStateProp, S1_3_SumLongRuns) { check_cases(10, [] { check_program("sum", 200, 50); }); }
-TEST(SacStateProp, S1_3_QuicksortLongRuns) { check_cases(5, [] { check_program("quicksort", 200, 50); }); }
-TEST(SacStateProp, S1_3_MergesortLongRuns) { check_cases(2, [] { check_program("mergesort", 200, 50); }); }
-TEST(SacStateProp, S1_3_QuickhullLongRuns) { check_cases(5, [] { check_program("quickhull", 200, 50); }); }
+TEST(SacStateProp, S1_3_MapLongRuns) { kmr::proptest::check_cases(15, [] { check_program("map", 200, 50); }); }
+TEST(SacStateProp, S1_3_FilterLongRuns) { kmr::proptest::check_cases(15, [] { check_program("filter", 200, 50); }); }
+TEST(SacStateProp, S1_3_SumLongRuns) { kmr::proptest::check_cases(10, [] { check_program("sum", 200, 50); }); }
+TEST(SacStateProp, S1_3_QuicksortLongRuns) { kmr::proptest::check_cases(5, [] { check_program("quicksort", 200, 50); }); }
+TEST(SacStateProp, S1_3_MergesortLongRuns) { kmr::proptest::check_cases(2, [] { check_program("mergesort", 200, 50); }); }
+TEST(SacStateProp, S1_3_QuickhullLongRuns) { kmr::proptest::check_cases(5, [] { check_program("quickhull", 200, 50); }); }
 
 // ---- expression trees: the model is the plain tree -------------------------------------------
 struct TreeSut {
@@ -255,6 +241,6 @@ void check_exptree(std::size_t max_leaves, int min_commands) {
 }
 
 RC_GTEST_PROP(SacStateProp, S1_3_ExptreePropagationEqualsFromScratch, ()) { check_exptree(29, 0); }
-TEST(SacStateProp, S1_3_ExptreeLongRuns) { check_cases(15, [] { check_exptree(200, 50); }); }
+TEST(SacStateProp, S1_3_ExptreeLongRuns) { kmr::proptest::check_cases(15, [] { check_exptree(200, 50); }); }
 
 }  // namespace
