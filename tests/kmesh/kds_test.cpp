@@ -10,28 +10,16 @@
 #include "exact/error.hpp"
 #include "kmesh/invariants.hpp"
 #include "kmesh/kds.hpp"
+#include "mesh_checks.hpp"
 
 using namespace kmr::kmesh;
 using kmr::exact::Integer;
+using kmr::kmesh::test::failures;
 
 namespace {
 
 InputPoint mv(long long x, long long y, long long vx = 0, long long vy = 0) {
   return {Integer(x), Integer(y), Integer(vx), Integer(vy)};
-}
-
-std::string failures(const std::vector<CheckResult>& rs) {
-  std::string s;
-  for (auto& r : rs)
-    if (!r.ok()) s += r.claim + ": " + r.violations[0] + "; ";
-  return s;
-}
-
-std::set<std::pair<Dyadic, Dyadic>> steiner_positions(const Mesh& m) {
-  std::set<std::pair<Dyadic, Dyadic>> s;
-  for (std::size_t v = 0; v < m.size(); ++v)
-    if (m.info[v].steiner) s.insert({m.spanner.position(int(v))[0], m.spanner.position(int(v))[1]});
-  return s;
 }
 
 // The checks after one batch or update; returns the fraction of Steiner vertices shared with the
@@ -42,11 +30,7 @@ double check_batch(const KineticMesh& k) {
     EXPECT_TRUE(holds_at(c, Dyadic(0))) << kind_name(c.kind) << " " << c.a << " " << c.b << " at " << k.now().to_decimal();
   std::string f = failures(check_all_updated(m));
   EXPECT_EQ(f, "") << "at " << k.now().to_decimal();
-  Mesh scratch = construct(k.trajectories(), k.now());
-  auto a = steiner_positions(m), b = steiner_positions(scratch);
-  std::size_t shared = 0;
-  for (auto& p : a) shared += b.count(p);
-  return double(shared) / double(std::max<std::size_t>({a.size(), b.size(), 1}));
+  return kmr::kmesh::test::shared_steiner_fraction(m, construct(k.trajectories(), k.now()));
 }
 
 }  // namespace

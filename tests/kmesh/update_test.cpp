@@ -11,27 +11,16 @@
 #include "exact/error.hpp"
 #include "kmesh/invariants.hpp"
 #include "kmesh/update.hpp"
+#include "mesh_checks.hpp"
 
 using namespace kmr::kmesh;
 using kmr::exact::Integer;
+using kmr::kmesh::test::failures;
+using kmr::kmesh::test::steiner_positions;
 
 namespace {
 
 InputPoint ip(long long x, long long y) { return {Integer(x), Integer(y)}; }
-
-std::string failures(const std::vector<CheckResult>& rs) {
-  std::string s;
-  for (auto& r : rs)
-    if (!r.ok()) s += r.claim + ": " + r.violations[0] + "; ";
-  return s;
-}
-
-std::set<std::pair<Dyadic, Dyadic>> steiner_positions(const Mesh& m) {
-  std::set<std::pair<Dyadic, Dyadic>> s;
-  for (std::size_t v = 0; v < m.size(); ++v)
-    if (m.info[v].steiner) s.insert({m.spanner.position(int(v))[0], m.spanner.position(int(v))[1]});
-  return s;
-}
 
 // Families: 0 uniform, 1 grid, 2 collinear, 3 cocircular (radius 25), 4 two clusters 2^30 apart.
 InputPoint draw(int family, std::mt19937_64& rng) {
@@ -82,11 +71,7 @@ double run(int family, int n0, int steps, unsigned seed) {
     std::string f = failures(check_all_updated(m));
     EXPECT_EQ(f, "") << "family " << family << " step " << step << " " << what;
     if (!f.empty()) return -1;
-    Mesh fresh = construct(pts);
-    auto a = steiner_positions(m), b = steiner_positions(fresh);
-    std::size_t shared = 0;
-    for (auto& p : a) shared += b.count(p);
-    stab += double(shared) / double(std::max<std::size_t>(1, std::max(a.size(), b.size())));
+    stab += kmr::kmesh::test::shared_steiner_fraction(m, construct(pts));
     ++counted;
   }
   return counted ? stab / counted : 1;
