@@ -11,6 +11,7 @@
 #include "exact/error.hpp"
 #include "sac/runtime.hpp"
 #include "sacprograms/generality.hpp"
+#include "error_of.hpp"
 
 using namespace kmr::sac;
 
@@ -18,15 +19,7 @@ namespace {
 
 constexpr Label kIn{"in"}, kOut{"out"}, kCert{"cert"}, kHook{"hook"}, kBox{"box"}, kG{"g"}, kCell{"cell"};
 
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const kmr::ContractError& e) {
-    return e.what();
-  }
-  return "";
-}
+using kmr::sac::test::error_of;
 
 // §1 item 1: a certificate allocated inside the run under a key, set by its owner between runs.
 struct CertProgram {

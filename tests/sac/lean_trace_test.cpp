@@ -9,6 +9,7 @@
 
 #include "exact/error.hpp"
 #include "sac/runtime.hpp"
+#include "error_of.hpp"
 
 using namespace kmr::sac;
 
@@ -16,15 +17,7 @@ namespace {
 
 constexpr Label kIn{"in"}, kStart{"start"}, kOut{"out"}, kMapL{"lean.map"}, kSuf{"lean.suffix"};
 
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const kmr::ContractError& e) {
-    return e.what();
-  }
-  return "";
-}
+using kmr::sac::test::error_of;
 
 struct Link {  // a cell of map's output: value and the next cell (by name in the signature)
   long long v = 0;

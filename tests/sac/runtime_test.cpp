@@ -6,6 +6,7 @@
 
 #include "exact/error.hpp"
 #include "sac/runtime.hpp"
+#include "error_of.hpp"
 
 using namespace kmr::sac;
 
@@ -13,15 +14,7 @@ namespace {
 
 constexpr Label kIn{"in"}, kOut{"out"}, kG{"g"}, kCell{"cell"}, kHook{"hook"}, kF{"f"};
 
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const kmr::ContractError& e) {
-    return e.what();
-  }
-  return "";
-}
+using kmr::sac::test::error_of;
 
 // The ContractError message (or "") of running body inside rt.run.
 template <class F>
