@@ -79,8 +79,15 @@ TEST(MachinePolynomial, ApproximationsRoundToNearest) {
   check((static_cast<__int128>(1) << 53) + 1);  // a tie: rounds to even (2^53)
   EXPECT_EQ(M::to_double((static_cast<__int128>(1) << 53) + 1), 0x1p53);
   EXPECT_EQ(M::to_double((static_cast<__int128>(1) << 53) + 3), 0x1p53 + 4);
+  // Ties and near-ties far above 2^64 (the sticky bit): (2^53 + 1)·2^k is a tie (rounds to even),
+  // one more is above it, one less below; the same with an odd mantissa 2^53 + 3.
+  for (int k = 1; k <= 73; ++k)
+    for (__int128 m : {(static_cast<__int128>(1) << 53) + 1, (static_cast<__int128>(1) << 53) + 3})
+      for (int d = -1; d <= 1; ++d) check((m << k) + d), check(-((m << k) + d));
   std::mt19937_64 rng(7);
-  for (int i = 0; i < 4000; ++i) check(random_value(rng, 1 + static_cast<int>(rng() % 126)));
+  for (int i = 0; i < 20000; ++i) check(random_value(rng, 1 + static_cast<int>(rng() % 126)));
+  const __int128 max = static_cast<__int128>((static_cast<unsigned __int128>(1) << 127) - 1);
+  check(max), check(-max), check(-max - 1);
   const M p = M::cubic_terms(static_cast<__int128>(1) << 100, -((static_cast<__int128>(1) << 53) + 1)) + M::linear(5, -7);
   const auto a = p.approximations();
   EXPECT_EQ(a[0], 5.0);
