@@ -56,7 +56,7 @@ using sac::Mod;
 
 constexpr Label kFace{"hull.face"}, kNbr{"hull.face.nbr"}, kKiller{"hull.face.killer"}, kFaceHook{"hull.face.hook"},
     kTent{"hull.tent"}, kRoots{"hull.roots"}, kCertInitial{"hull.cert.initial"}, kCertVisible{"hull.cert.visible"},
-    kCertSide{"hull.cert.side"}, kCertHook{"hull.cert.hook"}, kFindFace{"hull.find_face"};
+    kCertSide{"hull.cert.side"}, kFindFace{"hull.find_face"};
 
 constexpr std::size_t kStack = std::size_t{1} << 30;  // virtual; continuations nest per insertion
 
@@ -528,40 +528,45 @@ std::string KineticHull::describe(Test test, int a, int b, int c, int d) const {
          " stay coplanar for all time: an identically zero certificate";
 }
 
+// A reused certificate (its key found in the re-executed interval) keeps its traceable, value and
+// registration: nothing is looked up. A new traceable is initialised by init_certificate.
 sac::Mod<int>* KineticHull::certificate(Test test, int a, int b, int c, int d) {
+  return rt_.owned<int, CertificateRecord>(
+      label_of(test), this, [](void* kh, CertificateMod* m) { static_cast<KineticHull*>(kh)->certificate_released(m); },
+      [&](CertificateMod& m) { init_certificate(m, test, a, b, c, d); }, a, b, c, d);
+}
+
+void KineticHull::init_certificate(CertificateMod& m, Test test, int a, int b, int c, int d) {
   const CertificateKey key{static_cast<int>(test), a, b, c, d};
   auto it = certs_.find(key);
-  int initial;
-  kinetic::CertificateId sid = 0;
-  if (it != certs_.end()) {
-    initial = it->second.cert->value;  // the same polynomial's current outcome
+  if (it != certs_.end()) {  // re-created under its key before its predecessor's release: the
+    m.value = it->second.cert->value;  // simulator keeps its certificate (the same polynomial's outcome)
+    it->second.cert->payload.current = false;
+    it->second.cert = &m;
   } else {
     CertificatePolynomial P = polynomial(test, a, b, c, d);
     if (P.is_zero()) throw InputError(describe(test, a, b, c, d));
+    kinetic::CertificateId sid = 0;
     if (sim_) {
       sid = P.machine ? sim_->add(*P.machine) : sim_->add(P.exact);
-      initial = sim_->outcome(sid);
+      m.value = sim_->outcome(sid);
       ++counters_.certificates_created;
     } else {
-      initial = sign_before_t(P);
+      m.value = sign_before_t(P);
     }
-  }
-  sac::Mod<int>* m = rt_.traceable<int>(label_of(test), initial, a, b, c, d);
-  sac::HookId hook = rt_.on_discard(kCertHook, [this, key](sac::HookId self) { certificate_discarded(key, self); });
-  if (it != certs_.end()) {
-    it->second.cert = m;  // reused, or re-created under its key: the simulator keeps its certificate
-    it->second.hook = hook;
-  } else {
-    Registration& reg = certs_.emplace(key, Registration{m, hook, sid}).first->second;
+    Registration& reg = certs_.emplace(key, Registration{&m, sid}).first->second;
     index_certificate(key, true);
     if (sim_) register_sim(sid, &reg);
   }
-  return m;
+  m.payload.key = key;
+  m.payload.current = true;
 }
 
-void KineticHull::certificate_discarded(const CertificateKey& key, sac::HookId self) {
+void KineticHull::certificate_released(CertificateMod* m) {
+  if (!m->payload.current) return;  // a successor's registration
+  const CertificateKey key = m->payload.key;
   auto it = certs_.find(key);
-  if (it == certs_.end() || it->second.hook != self) return;  // a successor's registration
+  KMR_CHECK(it != certs_.end() && it->second.cert == m, "kinetic hull: a released certificate is not registered");
   if (sim_) {
     sim_->remove(it->second.sim);
     by_sim_[it->second.sim] = nullptr;

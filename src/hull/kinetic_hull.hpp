@@ -5,7 +5,8 @@
 // Every comparison the static algorithm makes (hull.hpp) is a certificate: a traceable ±1 created
 // during the run, keyed by the points it compares, whose polynomial (moving_points.hpp) is handed to
 // the simulator; the simulator flips outcomes batch by batch and change propagation repairs the
-// trace. Discarded trace releases its certificates (undo hooks).
+// trace. Discarded trace releases its certificates: each is an owned traceable (sac::OwnedMod)
+// whose allocation node tells the hull when it is discarded (a fused undo hook).
 //
 // Guarantees (tests in tests/hull/kinetic_hull_test.cpp):
 //  * After construction and after every update(batch), facets() is the convex hull of the points
@@ -114,11 +115,18 @@ class KineticHull {
     bool operator==(const Killer&) const = default;
   };
   enum class Test : std::uint8_t { initial, visible, side };
+  // A certificate's traceable: its outcome, and (the owner's record) its key and whether it holds
+  // the key's registration (false once a successor re-created under the key took it over).
+  struct CertificateRecord {
+    CertificateKey key{};
+    bool current = false;
+  };
+  using CertificateMod = sac::OwnedMod<int, CertificateRecord>;
   // Inside runs: the certificate of a test (created, or reused with its trace).
   sac::Mod<int>* certificate(Test test, int a, int b, int c, int d);
   void face_created(FaceH f, sac::HookId hook);
   void face_discarded(const std::array<int, 3>& key, sac::HookId self);
-  void certificate_discarded(const CertificateKey& key, sac::HookId self);
+  void certificate_released(CertificateMod* m);  // its allocation node was discarded
   sac::Runtime& rt() { return rt_; }
   const std::vector<int>& order() const { return order_; }
   const std::array<int, 4>& simplex() const { return simplex_; }
@@ -145,9 +153,9 @@ class KineticHull {
   void refresh_machine_points(int x = -1);
   std::string describe(Test test, int a, int b, int c, int d) const;
 
+  void init_certificate(CertificateMod& m, Test test, int a, int b, int c, int d);
   struct Registration {
-    sac::Mod<int>* cert = nullptr;
-    sac::HookId hook = 0;
+    CertificateMod* cert = nullptr;  // the traceable holding the key (payload.current)
     kinetic::CertificateId sim = 0;
   };
   std::vector<MovingPoint> pts_;

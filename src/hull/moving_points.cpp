@@ -71,17 +71,25 @@ std::optional<MachinePoint> machine_point(const MovingPoint& p) {
 
 namespace {
 using I = __int128;
-// det[a; b; c] of 3-vectors with |entries| ≤ 2^39: |det| < 6·2^117 < 2^120.
-I det3(const std::array<std::int64_t, 3>& a, const std::array<std::int64_t, 3>& b, const std::array<std::int64_t, 3>& c) {
-  return I(a[0]) * (I(b[1]) * c[2] - I(b[2]) * c[1]) - I(a[1]) * (I(b[0]) * c[2] - I(b[2]) * c[0]) +
-         I(a[2]) * (I(b[0]) * c[1] - I(b[1]) * c[0]);
+// For 3-vectors with |entries| ≤ 2^39: b × c (|entries| ≤ 2^79) and a · x (|a · x| < 3·2^39·2^80
+// < 2^121), so det3(a, b, c) = det[a; b; c] = a · (b × c) never overflows.
+using V3 = std::array<std::int64_t, 3>;
+using I3 = std::array<I, 3>;
+I3 cross(const V3& b, const V3& c) {
+  return {I(b[1]) * c[2] - I(b[2]) * c[1], I(b[2]) * c[0] - I(b[0]) * c[2], I(b[0]) * c[1] - I(b[1]) * c[0]};
 }
-// det of the rows (x_i + v_i·t), i = 0, 1, 2, as a cubic (multilinearity in the rows).
+I dot(const V3& a, const I3& x) { return a[0] * x[0] + a[1] * x[1] + a[2] * x[2]; }
+// det of the rows (x_i + v_i·t), i = 0, 1, 2, as a cubic (multilinearity in the rows):
+// c0 = det3(u.x, v.x, w.x), c1 = det3(u.v, v.x, w.x) + det3(u.x, v.v, w.x) + det3(u.x, v.x, w.v),
+// c2 = det3(u.x, v.v, w.v) + det3(u.v, v.x, w.v) + det3(u.v, v.v, w.x), c3 = det3(u.v, v.v, w.v),
+// with the four cross products of v's and w's rows shared (exact integers: the same coefficients).
 poly::MachinePolynomial rows_determinant(const MachinePoint& u, const MachinePoint& v, const MachinePoint& w) {
-  const I c0 = det3(u.x, v.x, w.x);
-  const I c1 = det3(u.v, v.x, w.x) + det3(u.x, v.v, w.x) + det3(u.x, v.x, w.v);
-  const I c2 = det3(u.x, v.v, w.v) + det3(u.v, v.x, w.v) + det3(u.v, v.v, w.x);
-  const I c3 = det3(u.v, v.v, w.v);
+  const I3 xx = cross(v.x, w.x), vv = cross(v.v, w.v), mixed0 = cross(v.v, w.x), mixed1 = cross(v.x, w.v);
+  const I3 mixed{mixed0[0] + mixed1[0], mixed0[1] + mixed1[1], mixed0[2] + mixed1[2]};
+  const I c0 = dot(u.x, xx);
+  const I c1 = dot(u.v, xx) + dot(u.x, mixed);
+  const I c2 = dot(u.x, vv) + dot(u.v, mixed);
+  const I c3 = dot(u.v, vv);
   return poly::MachinePolynomial::linear(c0, c1) + poly::MachinePolynomial::cubic_terms(c2, c3);
 }
 MachinePoint difference(const MachinePoint& a, const MachinePoint& b, std::int64_t ka = 1, std::int64_t kb = 1) {

@@ -23,16 +23,16 @@ struct Iv {
 };
 constexpr Iv kEntire{-kInf, kInf};
 constexpr double kRel = 0x1p-51, kAbs = 0x1p-1022;
-Iv widened(double lo, double hi) {
+[[gnu::always_inline]] inline Iv widened(double lo, double hi) {
   if (!(std::fabs(lo) < kInf) || !(std::fabs(hi) < kInf)) return kEntire;  // also NaN
   return {lo - (std::fabs(lo) * kRel + kAbs), hi + (std::fabs(hi) * kRel + kAbs)};
 }
-bool finite(Iv a) { return std::fabs(a.lo) < kInf && std::fabs(a.hi) < kInf; }
-Iv add(Iv a, Iv b) {
+[[gnu::always_inline]] inline bool finite(Iv a) { return std::fabs(a.lo) < kInf && std::fabs(a.hi) < kInf; }
+[[gnu::always_inline]] inline Iv add(Iv a, Iv b) {
   if (!finite(a) || !finite(b)) return kEntire;
   return widened(a.lo + b.lo, a.hi + b.hi);
 }
-Iv mul(Iv a, Iv b) {
+[[gnu::always_inline]] inline Iv mul(Iv a, Iv b) {
   if (!finite(a) || !finite(b)) return kEntire;
   double p0 = a.lo * b.lo, p1 = a.lo * b.hi, p2 = a.hi * b.lo, p3 = a.hi * b.hi;  // finite: no NaN
   return widened(std::min(std::min(p0, p1), std::min(p2, p3)), std::max(std::max(p0, p1), std::max(p2, p3)));
@@ -42,14 +42,26 @@ int sign_of(Iv v) { return v.lo > 0 ? 1 : v.hi < 0 ? -1 : 0; }  // 0: may contai
 constexpr int kMaxDegree = 15;  // higher degrees are left to the exact path
 using Coefficients = std::array<Iv, kMaxDegree + 1>;
 
-Iv horner(const Coefficients& c, int n, Iv x) {
+// Interval Horner of c[0..n]. N ≥ 0: n = N known at compile time (the loop unrolls; the same
+// operations in the same order as N = −1, so the same enclosure to the bit).
+template <int N>
+[[gnu::always_inline]] inline Iv horner(const Coefficients& c, int n, Iv x) {
+  if constexpr (N >= 0) n = N;
   Iv y = c[static_cast<std::size_t>(n)];
   for (int i = n - 1; i >= 0; --i) y = add(mul(y, x), c[static_cast<std::size_t>(i)]);
   return y;
 }
 
+// 2^−bits exactly (0 ≤ bits ≤ 62), as std::ldexp(1.0, −bits) without the library call.
+double inv_pow2(int bits) {
+  return bits >= 0 && bits <= 62 ? 1.0 / static_cast<double>(std::uint64_t{1} << bits) : std::ldexp(1.0, -bits);
+}
+
 // The double sign of p(kδ) with filtered_sign_at's rigorous bound (polynomial.cpp); 0: undecided.
+// N as for horner.
+template <int N = -1>
 int double_sign_at(const double* c, int n, std::int64_t k, double inv_scale) {
+  if constexpr (N >= 0) n = N;
   if (!(k > -(std::int64_t{1} << 53) && k < (std::int64_t{1} << 53))) return 0;
   double x = double(k) * inv_scale;  // exact
   double ax = std::fabs(x);
@@ -67,12 +79,14 @@ int double_sign_at(const double* c, int n, std::int64_t k, double inv_scale) {
 }
 
 // The filter over rounded coefficients c[0..n] (each within one ulp of the exact one); ExactSign(k)
-// is the exact sign of p(kδ), asked only when the double evaluation cannot decide it.
-template <class ExactSign>
+// is the exact sign of p(kδ), asked only when the double evaluation cannot decide it. N ≥ 0: the
+// degree n = N is known at compile time (the cubics of the kinetic hull; the same arithmetic, bit
+// for bit, as N = −1, only unrolled); N = −1: any degree.
+template <class ExactSign, int N = -1>
 class Filter {
  public:
   Filter(const double* c, int n, bool usable, int bits, ExactSign exact)
-      : c_(c), usable_(usable), exact_(exact), n_(n), inv_scale_(std::ldexp(1.0, -bits)) {
+      : c_(c), usable_(usable), exact_(exact), n_(N >= 0 ? N : n), inv_scale_(inv_pow2(bits)) {
     if (!usable_ || n_ > kMaxDegree) return;
     for (int i = 0; i <= n_; ++i)  // mpz_get_d truncates: < 1 ulp, inside the widening
       coeff_[static_cast<std::size_t>(i)] = widened(c[i], c[i]);
@@ -106,8 +120,8 @@ class Filter {
       if (--budget < 0) return r;
       // [lo·δ, hi·δ] enclosed: double(k) rounds to nearest, the widening covers it; ·2^−b is exact.
       Iv x = widened(double(lo) * inv_scale_, double(hi) * inv_scale_);
-      if (sign_of(horner(coeff_, n_, x)) != 0) continue;  // no root in [lo·δ, hi·δ]
-      if (int d = sign_of(horner(deriv_, std::max(n_ - 1, 0), x)); d != 0) {
+      if (sign_of(horner<N>(coeff_, n_, x)) != 0) continue;  // no root in [lo·δ, hi·δ]
+      if (int d = sign_of(horner<(N > 0 ? N - 1 : N)>(deriv_, std::max(n_ - 1, 0), x)); d != 0) {
         // p strictly monotone on the range: sign_before changes at most once along it.
         int s_lo = sign_before(lo, d), s_hi = sign_before(hi, d);
         if (s_lo == s_hi) continue;
@@ -140,6 +154,7 @@ class Filter {
   // An approximate lattice index of the root of p in the monotone range [lo, hi] (a few Newton
   // steps from the midpoint in doubles), clamped to [lo, hi − 1]; its accuracy does not matter.
   std::int64_t newton_guess(std::int64_t lo, std::int64_t hi) const {
+    const int n_ = N >= 0 ? N : this->n_;  // (compile-time degree: the loop unrolls)
     const double a = double(lo) * inv_scale_, b = double(hi) * inv_scale_;
     double x = 0.5 * (a + b);
     for (int it = 0; it < 8; ++it) {
@@ -163,6 +178,7 @@ class Filter {
   // when it does not fit. The coefficients are within one ulp of the exact ones and pow, sqrt and
   // cbrt within a few ulps, so the factor 1 + 2^−20 covers every rounding.
   std::optional<std::int64_t> root_bound_index() const {
+    const int n_ = N >= 0 ? N : this->n_;
     if (n_ < 1 || c_[n_] == 0) return std::nullopt;
     const double lead = std::fabs(c_[n_]);
     double m = 0;
@@ -184,7 +200,7 @@ class Filter {
   }
   // The exact sign of p(kδ): a double evaluation with filtered_sign_at's bound, else exact.
   int sign_at(std::int64_t k) const {
-    if (int s = double_sign_at(c_, n_, k, inv_scale_); s != 0) return s;
+    if (int s = double_sign_at<N>(c_, n_, k, inv_scale_); s != 0) return s;
     return exact_(k);
   }
 
@@ -223,13 +239,19 @@ FailureFilterResult filtered_next_failure(const MachinePolynomial& p, int bits, 
   check_query(bits, a, b);
   const auto approx = p.approximations();  // round to nearest: within the one-ulp allowance
   auto exact = [&p, bits](std::int64_t k) { return p.to_polynomial().sign_at(Integer(k), bits); };
-  return Filter<decltype(exact)>(approx.data(), p.degree(), true, bits, exact).run(a, b);
+  switch (p.degree()) {  // the degree at compile time: the same decisions, unrolled arithmetic
+    case 3: return Filter<decltype(exact), 3>(approx.data(), 3, true, bits, exact).run(a, b);
+    case 2: return Filter<decltype(exact), 2>(approx.data(), 2, true, bits, exact).run(a, b);
+    default: return Filter<decltype(exact)>(approx.data(), p.degree(), true, bits, exact).run(a, b);
+  }
 }
 
 int sign_before_lattice(const MachinePolynomial& p, std::int64_t k, int bits) {
   KMR_CHECK(!p.is_zero(), "sign_before of the zero polynomial");
   const auto approx = p.approximations();
-  if (int s = double_sign_at(approx.data(), p.degree(), k, std::ldexp(1.0, -bits)); s != 0) return s;
+  const double inv_scale = inv_pow2(bits);
+  if (int s = p.degree() == 3 ? double_sign_at<3>(approx.data(), 3, k, inv_scale) : double_sign_at(approx.data(), p.degree(), k, inv_scale); s != 0)
+    return s;
   return sign_before(p.to_polynomial(), Dyadic(Integer(k), -bits));
 }
 

@@ -13,6 +13,7 @@
 //  * approximations(): each coefficient rounded to nearest double (|error| ≤ 2^−53·|c|, inside
 //    the one-ulp allowance of DoubleCoefficients).
 #include <array>
+#include <bit>
 #include <cstdint>
 
 #include "poly/polynomial.hpp"
@@ -71,8 +72,28 @@ class MachinePolynomial {
   Polynomial to_polynomial() const;
   std::array<double, kMaxDegree + 1> approximations() const {
     std::array<double, kMaxDegree + 1> d{};
-    for (int i = 0; i <= degree_; ++i) d[static_cast<std::size_t>(i)] = static_cast<double>(c_[static_cast<std::size_t>(i)]);
+    for (int i = 0; i <= degree_; ++i) d[static_cast<std::size_t>(i)] = to_double(c_[static_cast<std::size_t>(i)]);
     return d;
+  }
+  // c rounded to nearest (ties to even), as the 128-bit library conversion rounds it, without its
+  // call: a 64-bit conversion when c fits; else the top 64 bits of |c| with a sticky bit for the
+  // rest (below the rounding position, so the one rounding of the 64-bit conversion is c's),
+  // scaled by an exact power of two.
+  static double to_double(__int128 c) {
+    const auto s = static_cast<std::int64_t>(c);
+    if (s == c) return static_cast<double>(s);
+    const bool neg = c < 0;
+    const unsigned __int128 u = neg ? -static_cast<unsigned __int128>(c) : static_cast<unsigned __int128>(c);
+    const auto hi = static_cast<std::uint64_t>(u >> 64), lo = static_cast<std::uint64_t>(u);
+    double r;
+    if (hi == 0) {
+      r = static_cast<double>(lo);
+    } else {
+      const int sh = 64 - __builtin_clzll(hi);  // 1..63: u >> sh has 64 bits
+      const std::uint64_t m = static_cast<std::uint64_t>(u >> sh) | static_cast<std::uint64_t>((lo << (64 - sh)) != 0);
+      r = static_cast<double>(m) * std::bit_cast<double>(static_cast<std::uint64_t>(1023 + sh) << 52);  // ·2^sh, exact
+    }
+    return neg ? -r : r;
   }
 
   // |c| < 2^bits

@@ -393,6 +393,17 @@ void Runtime::kill(Node* n) {
       auto* a = static_cast<AllocNode*>(n);
       unindex(a);
       if (ModBase* m = a->mod) {
+        if (auto release = m->descriptor().release) {  // an owned traceable: its fused undo hook
+          in_undo_ = true;
+          try {
+            release(m);
+          } catch (...) {
+            in_undo_ = false;
+            throw;
+          }
+          in_undo_ = false;
+          ++stats_.hooks_run;
+        }
         m->dead = true;
         dead_.push_back(m);
       }

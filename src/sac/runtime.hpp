@@ -292,6 +292,7 @@ struct ModType {
   std::uint64_t (*value_hash)(const ModBase*);
   void (*destroy)(ModBase*);
   std::uint32_t bytes;
+  void (*release)(ModBase*) = nullptr;  // an owned traceable's release (OwnedMod), else null
 };
 namespace detail {
 std::uint16_t register_mod_type(const ModType* t);  // thread-safe; ContractError past 65 535 types
@@ -301,7 +302,13 @@ template <class M>
 struct ModTypeOf {
   static std::uint64_t hash(const ModBase* m) { return static_cast<const M*>(m)->value_digest(); }
   static void destroy(ModBase* m) { static_cast<M*>(m)->~M(); }
-  static constexpr ModType desc{&hash, &destroy, sizeof(M)};
+  static void release(ModBase* m) {
+    if constexpr (requires { M::kOwned; }) {
+      auto* o = static_cast<M*>(m);
+      if (o->release) o->release(o->owner, o);
+    }
+  }
+  static constexpr ModType desc{&hash, &destroy, sizeof(M), requires { M::kOwned; } ? &release : nullptr};
   static std::uint16_t id() {
     static const std::uint16_t i = register_mod_type(&desc);
     return i;
@@ -349,6 +356,19 @@ struct IMod : IModBase {
 };
 template <class T>
 using IBox = IMod<T>;
+
+// An owned traceable (rt.owned): a traceable value whose owner keeps its record P in the
+// modifiable and is told, by release(owner, m), when the trace node that allocated it is
+// discarded while still holding it (not when a re-execution reuses it under its key). This is an
+// undo hook fused into the allocation node: the same time order (release runs where the node
+// is), one trace node and one stamp instead of two, and nothing to look up on reuse.
+template <class T, class P>
+struct OwnedMod : Mod<T> {
+  static constexpr bool kOwned = true;
+  P payload{};
+  void (*release)(void* owner, OwnedMod* self) = nullptr;
+  void* owner = nullptr;
+};
 
 inline std::uint64_t canon_key(const ModBase* m) { return m ? m->name : 0x6e696cULL; }
 
@@ -593,6 +613,26 @@ class Runtime {
       m->external = true;
       m->written = true;
       m->value = std::move(initial);
+    }
+    return m;
+  }
+  // An owned traceable (OwnedMod; a kinetic certificate): keyed like traceable. When the key is new
+  // in this execution's window, init(m) sets m->value and m->payload (the modifiable is then
+  // written); when it is reused, m keeps its value and payload and init is not called.
+  // release(owner, m) runs, as an undo hook would (in_undo: no trace operations), when the
+  // allocation node holding m is discarded; not on ~Runtime, and not for a node whose modifiable
+  // was taken over by a reusing allocation.
+  template <class T, class P, class Init, class... K>
+  OwnedMod<T, P>* owned(const Label& label, void* owner, void (*release)(void*, OwnedMod<T, P>*), Init&& init,
+                        const K&... keys) {
+    bool reused = false;
+    auto* m = alloc_impl<OwnedMod<T, P>>(label, &reused, keys...);
+    if (!reused) {
+      m->external = true;
+      init(*m);
+      m->written = true;
+      m->owner = owner;
+      m->release = release;
     }
     return m;
   }

@@ -61,6 +61,41 @@ TEST(MachinePolynomial, ToIntegerAtTheExtremes) {
   }
 }
 
+// approximations() rounds each coefficient to nearest (issue 9: a 64-bit conversion when it fits):
+// judged by the 128-bit library conversion, and below 2^63 also by long double (64-bit mantissa:
+// exact, then one rounding), around the 2^53 and 2^63 boundaries and on random magnitudes.
+TEST(MachinePolynomial, ApproximationsRoundToNearest) {
+  auto check = [](__int128 v) {
+    const double got = M::to_double(v);
+    ASSERT_EQ(got, static_cast<double>(v)) << static_cast<long double>(v);
+    if (v > -(static_cast<__int128>(1) << 63) && v < (static_cast<__int128>(1) << 63))
+      ASSERT_EQ(got, static_cast<double>(static_cast<long double>(static_cast<long long>(v))));
+  };
+  for (int e : {52, 53, 54, 62, 63, 64, 100, 126})
+    for (int d = -3; d <= 3; ++d) {
+      const __int128 b = (static_cast<__int128>(1) << e) + d;
+      check(b), check(-b), check(b - 1 + (static_cast<__int128>(1) << (e - 1)));  // halfway-ish
+    }
+  check((static_cast<__int128>(1) << 53) + 1);  // a tie: rounds to even (2^53)
+  EXPECT_EQ(M::to_double((static_cast<__int128>(1) << 53) + 1), 0x1p53);
+  EXPECT_EQ(M::to_double((static_cast<__int128>(1) << 53) + 3), 0x1p53 + 4);
+  // Ties and near-ties far above 2^64 (the sticky bit): (2^53 + 1)·2^k is a tie (rounds to even),
+  // one more is above it, one less below; the same with an odd mantissa 2^53 + 3.
+  for (int k = 1; k <= 73; ++k)
+    for (__int128 m : {(static_cast<__int128>(1) << 53) + 1, (static_cast<__int128>(1) << 53) + 3})
+      for (int d = -1; d <= 1; ++d) check((m << k) + d), check(-((m << k) + d));
+  std::mt19937_64 rng(7);
+  for (int i = 0; i < 20000; ++i) check(random_value(rng, 1 + static_cast<int>(rng() % 126)));
+  const __int128 max = static_cast<__int128>((static_cast<unsigned __int128>(1) << 127) - 1);
+  check(max), check(-max), check(-max - 1);
+  const M p = M::cubic_terms(static_cast<__int128>(1) << 100, -((static_cast<__int128>(1) << 53) + 1)) + M::linear(5, -7);
+  const auto a = p.approximations();
+  EXPECT_EQ(a[0], 5.0);
+  EXPECT_EQ(a[1], -7.0);
+  EXPECT_EQ(a[2], 0x1p100);
+  EXPECT_EQ(a[3], -0x1p53);
+}
+
 TEST(MachinePolynomial, ArithmeticIsPolynomialArithmetic) {
   std::mt19937_64 rng(2);
   for (int i = 0; i < 3000; ++i) {

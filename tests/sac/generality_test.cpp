@@ -511,4 +511,154 @@ TEST(SacGenerality, MisuseAWriteDroppedWhileItsReadStays) {
   EXPECT_NE(f.find("before it was written"), std::string::npos) << f;
 }
 
+
+// Owned traceables (rt.owned, spec/sac.md "Owned traceables"): the undo hook fused into the
+// allocation node. Hand-derived expectations: a reused owned traceable is not released; one whose
+// allocation is discarded is released once, in time order, after the replacing code, and the owner
+// tells a predecessor from its successor by the record it keeps in the modifiable; reset releases
+// the rest; ~Runtime releases nothing.
+struct OwnedRecord {
+  int key = 0;
+  bool current = false;
+};
+using OwnedCert = OwnedMod<bool, OwnedRecord>;
+struct OwnedOwner {
+  std::map<int, OwnedCert*> registry;  // key → the traceable holding it
+  std::vector<std::string> events;
+  int created = 0;
+  static void release(void* o, OwnedCert* m) { static_cast<OwnedOwner*>(o)->released(m); }
+  void released(OwnedCert* m) {
+    events.push_back("release:" + std::to_string(m->payload.key) + (m->payload.current ? "" : "(old)"));
+    if (m->payload.current) registry.erase(m->payload.key);
+  }
+  OwnedCert* cert(Runtime& rt, int key) {
+    return rt.owned<bool, OwnedRecord>(kCert, this, &OwnedOwner::release, [&](OwnedCert& m) {
+      auto it = registry.find(key);
+      if (it != registry.end()) {  // re-created before its predecessor's release
+        m.value = it->second->value;
+        it->second->payload.current = false;
+        it->second = &m;
+        events.push_back("recreate:" + std::to_string(key));
+      } else {
+        m.value = true;
+        registry[key] = &m;
+        ++created;
+        events.push_back("create:" + std::to_string(key));
+      }
+      m.payload = {key, true};
+    }, key);
+  }
+};
+
+// Reads cs[i..] in turn and hands the number that hold to k.
+template <class K>
+void count_owned(Runtime& rt, std::vector<OwnedCert*> cs, std::size_t i, int acc, K k) {
+  if (i == cs.size()) return k(acc);
+  rt.read(cs[i], [&rt, cs, i, acc, k](bool b) { count_owned(rt, cs, i + 1, acc + (b ? 1 : 0), k); });
+}
+
+TEST(SacGenerality, S1_3_OwnedTraceableIsReleasedWithItsAllocationOnly) {
+  RecordProperty("claim", "S1.3.3-traceable-undo");
+  Runtime rt;
+  OwnedOwner owner;
+  auto* x = rt.input<int>(kIn, 1, 3);
+  auto* y = rt.input<int>(kIn, 2, 0);
+  auto* o = rt.run([&] {
+    auto* out = rt.alloc<int>(kOut);
+    rt.read(x, [&, out](int n) {
+      // keys 0..n-1 (reused when n changes), then key 10 inside a read of y (re-created when y changes)
+      std::vector<OwnedCert*> cs;
+      for (int i = 0; i < n; ++i) cs.push_back(owner.cert(rt, i));
+      rt.read(y, [&, out, cs](int v) {
+        std::vector<OwnedCert*> all = cs;
+        all.push_back(owner.cert(rt, 10 + (v > 5 ? 1 : 0)));
+        count_owned(rt, all, 0, 0, [&rt, out, v](int t) { rt.write(out, t * 100 + v); });
+      });
+    });
+    return out;
+  });
+  EXPECT_EQ(rt.deref(o), 400);
+  EXPECT_EQ(owner.events, (std::vector<std::string>{"create:0", "create:1", "create:2", "create:10"}));
+  owner.events.clear();
+  // The owner sets a certificate; only it changes; the run follows.
+  rt.change<bool>(owner.registry.at(1), false);
+  rt.propagate();
+  EXPECT_EQ(rt.deref(o), 300);
+  EXPECT_TRUE(owner.events.empty());
+  // y changes: the read of y re-runs; key 10 is found in the re-executed interval and reused.
+  rt.change(y, 2);
+  rt.propagate();
+  EXPECT_EQ(rt.deref(o), 302);
+  EXPECT_TRUE(owner.events.empty()) << "a reused owned traceable is neither re-created nor released";
+  // y past 5: key 10 is not asked for any more (released), key 11 is new.
+  rt.change(y, 7);
+  rt.propagate();
+  EXPECT_EQ(rt.deref(o), 307);
+  EXPECT_EQ(owner.events, (std::vector<std::string>{"create:11", "release:10"}));
+  owner.events.clear();
+  // x changes: the outer read re-runs; keys 0, 1 are reused (1 keeps the owner's value), 2 is released.
+  rt.change(x, 2);
+  rt.propagate();
+  EXPECT_EQ(rt.deref(o), 207);  // keys 0 (true), 1 (false, kept), 11 (true)
+  EXPECT_EQ(owner.events, (std::vector<std::string>{"release:2"}));
+  EXPECT_EQ(owner.registry.size(), 3u);  // 0, 1, 11
+  EXPECT_EQ(owner.created, 5);
+  owner.events.clear();
+  rt.reset();
+  EXPECT_TRUE(owner.registry.empty()) << "reset releases every owned traceable";
+  EXPECT_EQ(owner.events.size(), 3u);
+}
+
+// A key re-created by an earlier re-executed read while its old allocation, in a later read's
+// interval, is still live: the new traceable takes the owner's value and registration, and the
+// old one's release (when the later read re-runs) leaves the registration alone.
+TEST(SacGenerality, S1_3_OwnedTraceableRecreatedBeforeItsPredecessorsRelease) {
+  RecordProperty("claim", "S1.3.3-traceable-undo");
+  Runtime rt;
+  OwnedOwner owner;
+  auto* x = rt.input<int>(kIn, 1, 0);
+  auto* y = rt.input<int>(kIn, 2, 0);
+  Mod<int>* ox = nullptr;
+  auto* out = rt.run([&] {
+    auto* o = rt.alloc<int>(kOut);
+    ox = rt.alloc<int>(kOut, 1);
+    rt.read(x, [&, o = ox](int v) {
+      if (v == 1) rt.read(owner.cert(rt, 7), [&rt, o](bool b) { rt.write(o, b ? 71 : 70); });
+      else rt.write(o, -1);
+    });
+    rt.read(y, [&, o](int w) {
+      if (w == 0) rt.read(owner.cert(rt, 7), [&rt, o](bool b) { rt.write(o, b ? 1 : 0); });
+      else rt.write(o, 2);
+    });
+    return o;
+  });
+  EXPECT_EQ(rt.deref(out), 1);
+  OwnedCert* first = owner.registry.at(7);
+  rt.change<bool>(first, false);  // the owner's value, which the successor must inherit
+  rt.propagate();
+  EXPECT_EQ(rt.deref(out), 0);
+  owner.events.clear();
+  rt.change(x, 1);
+  rt.change(y, 1);
+  rt.propagate();
+  EXPECT_EQ(owner.events, (std::vector<std::string>{"recreate:7", "release:7(old)"}));
+  ASSERT_EQ(owner.registry.count(7), 1u) << "the successor keeps the registration";
+  OwnedCert* second = owner.registry.at(7);
+  EXPECT_NE(second, first);
+  EXPECT_FALSE(second->value) << "the successor inherits the owner's value";
+  EXPECT_TRUE(second->payload.current);
+  EXPECT_EQ(rt.deref(out), 2);
+  EXPECT_EQ(rt.deref(ox), 70);
+  EXPECT_EQ(owner.created, 1);
+  rt.change(x, 0);
+  rt.propagate();
+  EXPECT_TRUE(owner.registry.empty());
+  OwnedOwner o2;
+  {
+    Runtime r2;
+    r2.run([&] { return o2.cert(r2, 1); });
+  }
+  EXPECT_EQ(o2.events, (std::vector<std::string>{"create:1"})) << "~Runtime releases nothing";
+}
+
 }  // namespace
