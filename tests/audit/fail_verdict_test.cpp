@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <any>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "audit/audit.hpp"
@@ -127,6 +129,25 @@ TEST(FailVerdict, WellSpacedJudgeCatchesANearDuplicateVertex) {
   EXPECT_FALSE(t.result.verdict.pass);
   EXPECT_EQ(t.calls, 5);  // the five 2D inputs; only the first is broken
   EXPECT_EQ(t.result.verdict.summary.rfind("5/6 outputs", 0), 0u) << t.result.verdict.summary;
+}
+
+// A check that throws is a FAIL whose summary carries the message (run_checks), also when the check
+// runs on the sac checks' large-stack thread (the exception crosses the thread); run_audit's status
+// is then 1 and its table says FAIL.
+TEST(FailVerdict, AThrowingCheckFailsWithItsMessageAlsoAcrossTheLargeStackThread) {
+  auto boom = [](const std::string&, std::any&) { throw std::runtime_error("tampered: boom"); };
+  for (const char* claim : {"A2.1-batch$", "S1.3.1-change-propagation$"}) {
+    Options o;
+    o.quick = true;
+    o.only = claim;
+    o.tamper = boom;
+    std::ostringstream table;
+    EXPECT_EQ(run_audit(o, table, nullptr), 1) << claim;
+    std::string t = table.str();
+    EXPECT_TRUE(has(t, " FAIL  ")) << t;
+    EXPECT_TRUE(has(t, "threw: tampered: boom")) << t;
+    EXPECT_TRUE(has(t, "0 passed, 1 failed")) << t;
+  }
 }
 
 }  // namespace
