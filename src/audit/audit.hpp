@@ -3,6 +3,7 @@
 // built-in deterministic defaults (seeded), and returns a verdict with the figures it measured.
 // Guarantees: checks run in registry order; the same binary and options print the same verdicts and
 // counts (timings excepted); run_audit's status is non-zero iff some check failed or threw.
+#include <any>
 #include <cstdint>
 #include <functional>
 #include <iosfwd>
@@ -22,7 +23,23 @@ struct Options {
   // Called before each check (index from 0, count, claim ID) and once more with index == count at
   // the end; the CLI shows it on stderr when stderr is a terminal. Never writes to `out`.
   std::function<void(std::size_t, std::size_t, const std::string&)> progress;
+  // A seam for tests of the judges (tests/audit/fail_verdict_test.cpp), never set by `kmr audit`:
+  // a check passes the measured result it is about to judge through measured(options, name, value),
+  // and tamper may replace that value (held in the std::any) with a wrong one, so that a test sees
+  // the check's FAIL path. Unset, measured() returns the value untouched: the audit measures and
+  // judges exactly what it did without the seam.
+  std::function<void(const std::string& name, std::any& value)> tamper;
 };
+
+// The measured value `value`, named `name` (claim ID and quantity), as the check should judge it:
+// itself unless a test's Options::tamper changed it (see Options::tamper).
+template <class T>
+T measured(const Options& options, const std::string& name, T value) {
+  if (!options.tamper) return value;
+  std::any held(std::move(value));
+  options.tamper(name, held);
+  return std::any_cast<T>(std::move(held));
+}
 
 struct Verdict {
   bool pass = false;

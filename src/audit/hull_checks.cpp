@@ -105,7 +105,7 @@ Verdict static_correct(const Options& o) {
   std::uint64_t tests = 0, fallbacks = 0;
   int checked = 0;
   for (auto& [name, pts] : inputs(o)) {
-    auto h = hull::convex_hull(pts, hull::Arithmetic::exact, o.seed);
+    auto h = measured(o, "C2.2-static-hull-correct hull", hull::convex_hull(pts, hull::Arithmetic::exact, o.seed));
     auto other = hull::convex_hull(pts, hull::Arithmetic::exact, o.seed + 1);
     std::string why = certify(pts, h);
     if (why.empty() && (other.facets != h.facets || other.vertices != h.vertices)) why = "another seed gives another output";

@@ -37,7 +37,7 @@ Verdict propagation_equals_from_scratch(const Options& o) {
       std::size_t edits = r % 3 == 2 ? 4 : 1;  // every third round a batch before one propagation
       for (std::size_t e = 0; e < edits; ++e) s.random_edit(rng, value);
       s.propagate();
-      Snapshot a = s.snapshot(), b = from_scratch(p, s.values(), s.ids());
+      Snapshot a = measured(o, "S1.3.1-change-propagation snapshot", s.snapshot()), b = from_scratch(p, s.values(), s.ids());
       ++checked;
       bool ok = a.output == b.output && a.output == s.static_output() && a.signature == b.signature &&
                 a.trace_nodes == b.trace_nodes && a.live_mods == b.live_mods;

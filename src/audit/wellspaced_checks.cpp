@@ -48,6 +48,7 @@ Verdict t334(const Options& o) {
     WellSpacedSet<2> ws(in);
     std::vector<Point<2>> M;
     for (auto& x : ws.vertices()) M.push_back(x.x);
+    M = measured(o, "T3.3.4 output 2D", std::move(M));
     ++total;
     ok += kmr::wsjudge::is_well_spaced<2>(M, ws.params().rho) && kmr::wsjudge::is_size_conforming<2>(in, M, ws.params().rho);
     v.figure(std::string("2D ") + gen::name(k) + " |M|/|N|", fmt(double(M.size()) / in.size()));

@@ -121,7 +121,7 @@ exact::Integer kmesh_integer(const std::string& s, const std::string& where) {
   try {
     return exact::parse_integer(s);
   } catch (const InputError&) {
-    throw InputError(where + ": '" + s + "' is not a decimal integer");
+    throw InputError(where + ": '" + printable(s) + "' is not a decimal integer");
   }
 }
 }  // namespace
@@ -145,7 +145,7 @@ exact::Dyadic parse_kmesh_time(const std::string& text, const std::string& where
   try {
     t = exact::Dyadic::parse(text);
   } catch (const InputError&) {
-    throw InputError(where + ": '" + text + "' is not a dyadic decimal time");
+    throw InputError(where + ": '" + printable(text) + "' is not a dyadic decimal time");
   }
   if (t.sign() < 0) throw InputError(where + ": time " + text + " is negative");
   if (!t.shifted(bits).is_integer())

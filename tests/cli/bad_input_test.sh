@@ -171,6 +171,50 @@ expect_error roots-empty-window "empty window" -- roots --from 2 --to 2 -- 1 1
 expect_error roots-zero "zero polynomial" -- roots -- 0 0 0
 expect_error roots-no-coefs "no coefficients" -- roots --
 
+# --- kmr kmesh FILE ('x y' or 'x y vx vy' decimal integers) [--updates 'T ± x y vx vy'] -----------
+printf '0 0\n3 1\n1 5\n' >"$f/km"
+printf '0 0\r\n3 1\r\n1 5\r\n' >"$f/km_crlf"
+printf '# three points\n0 0 0 0\n\n3 1 # at rest\n+1 5 0 -0\n' >"$f/km_comments"
+printf '0 0\n1\x00 2\n' >"$f/km_nul"
+printf '7 7\n' >"$f/km_one"
+printf '0 0 1 0\n' >"$f/km_moving"
+printf '0 + 4 0 0 0\n' >"$f/kmu_collide"
+printf '1 + 9 9 0 0\n' >"$f/kmu_late"
+printf '0 + 3 1 0 0\n' >"$f/kmu_present"
+printf '0 - 7 7 0 0\n' >"$f/kmu_last"
+printf -- '-1 + 9 9 0 0\n' >"$f/kmu_neg"
+printf '0\x00 + 9 9 0 0\n' >"$f/kmu_nul"
+printf '0 - 3 1 0 0\n0.5 + 3 1 0 0\n' >"$f/kmu_again"
+expect_same kmesh-crlf -- kmesh "$f/km" :: kmesh "$f/km_crlf"
+expect_same kmesh-comments -- kmesh "$f/km" :: kmesh "$f/km_comments"
+expect_error kmesh-no-file "kmr kmesh needs exactly one input FILE" -- kmesh
+expect_error kmesh-two-files "kmr kmesh needs exactly one input FILE" -- kmesh "$f/km" "$f/km"
+expect_error kmesh-missing "cannot read file '$f/nope'" -- kmesh "$f/nope"
+expect_error kmesh-empty "no input point" -- kmesh "$f/empty"
+expect_error kmesh-binary "binary:1: expected 'x y' or 'x y vx vy'" -- kmesh "$f/binary"
+expect_error kmesh-nul "km_nul:2: '1\\x00' is not a decimal integer" -- kmesh "$f/km_nul"
+expect_error kmesh-long-line "longline:1: expected 'x y' or 'x y vx vy'" -- kmesh "$f/longline"
+expect_error kmesh-bits-big "--lattice-bits 63 is out of range [0, 62]" -- kmesh "$f/km" --lattice-bits 63
+expect_error kmesh-bits-neg "--lattice-bits -1 is out of range [0, 62]" -- kmesh "$f/km" --lattice-bits -1
+expect_error kmesh-until-neg "--until: time -1 is negative" -- kmesh "$f/km" --until -1
+expect_error kmesh-until-text "--until: 'abc' is not a dyadic decimal time" -- kmesh "$f/km" --until abc
+expect_error kmesh-unknown-option "unknown option '--bogus'" -- kmesh "$f/km" --bogus
+expect_error kmesh-stats-unwritable "cannot write --stats file '$f/no/dir/s.json'" -- kmesh "$f/km" --stats "$f/no/dir/s.json"
+expect_error kmesh-updates-missing "cannot read file '$f/nope'" -- kmesh "$f/km" --updates "$f/nope"
+expect_error kmesh-update-late "kmu_late:1: update at time 1 is after --until 0" -- kmesh "$f/km" --updates "$f/kmu_late"
+expect_error kmesh-update-present "kmu_present:1: inserts a trajectory that is already present" -- kmesh "$f/km" --updates "$f/kmu_present"
+expect_error kmesh-update-last "kmu_last:1: deletes the last trajectory" -- kmesh "$f/km_one" --updates "$f/kmu_last"
+expect_error kmesh-update-neg "kmu_neg:1: time -1 is negative" -- kmesh "$f/km" --updates "$f/kmu_neg" --until 1
+expect_error kmesh-update-nul "kmu_nul:1: '0\\x00' is not a dyadic decimal time" -- kmesh "$f/km" --updates "$f/kmu_nul"
+# (0,0) moving by (1,0) meets the inserted (4,0) at t = 4 (within --until 8); both places named.
+expect_error kmesh-update-collides "kmu_collide:1 and $f/km_moving:1: the two points collide at time 4" -- kmesh "$f/km_moving" --updates "$f/kmu_collide" --until 8
+# Deleting a trajectory and inserting it again later is valid: the two lives do not overlap. The
+# repaired mesh has the vertices and triangles of a from-scratch run (certificate counts may differ).
+timeout 60 "$kmr" kmesh "$f/km" --updates "$f/kmu_again" --until 1 --lattice-bits 1 >"$tmp/again" 2>"$tmp/err"; ra=$?
+timeout 60 "$kmr" kmesh "$f/km" --until 1 --lattice-bits 1 >"$tmp/scratch" 2>&1; rb=$?
+if [ $ra -eq 0 ] && [ $rb -eq 0 ] && [ "$(sed 's/"events".*//' "$tmp/again")" = "$(sed 's/"events".*//' "$tmp/scratch")" ]; then passed=$((passed+1)); else
+  failed=$((failed+1)); echo "FAIL kmesh-reinsert: rc $ra/$rb"; head -c 300 "$tmp/err"; echo; fi
+
 # --- kmr audit, kmr bench, kmr -------------------------------------------------------------------
 expect_error audit-only-nothing "no claim matches --only 'ZZZ'" -- audit --only ZZZ
 expect_error audit-json-unwritable "cannot write --json file" -- audit --quick --only A2.1-lattice --json "$f/no/such/dir/a.json"
