@@ -1,10 +1,14 @@
 // kmr_oracle_ws_judge: judges a point-set file (e.g. `kmr wellspaced` stdout) with the exact CGAL
 // oracle: ρ-well-spacedness (T3.3.4) and, given the input, size conformity (Lemma 3.3.3).
 // Usage: kmr_oracle_ws_judge --dim D (--rho R | --rho-squared Q) [--input IN] OUTPUT
-//   Files: one point per line, D coordinates (read as doubles, converted exactly), optionally
+//   Files: one point per line, D coordinates (decimal: read as doubles, converted exactly; hex
+//   floats "0x1.8p-1" of any length: read exactly, as `kmr wellspaced` prints coordinates finer
+//   than doubles), optionally
 //   followed by more columns (ignored, e.g. the 0/1 Steiner flag); '#' starts a comment.
 // Prints one line per verdict; exit 0 if all hold, 1 if one fails, 2 on bad input.
+#include <cmath>
 #include <cstdio>
+#include <optional>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -19,30 +23,68 @@ using kmr::exact::Dyadic;
 
 namespace {
 
+// A hex float "[+-]0x<hex>[.<hex>]p[+-]<dec>" read exactly (any number of digits: `kmr wellspaced`
+// prints coordinates finer than doubles this way, spec/formats.md); nullopt if text is not one.
+std::optional<Dyadic> parse_hex_exact(const std::string& text) {
+  std::size_t i = 0;
+  bool neg = false;
+  if (i < text.size() && (text[i] == '+' || text[i] == '-')) neg = text[i++] == '-';
+  if (text.compare(i, 2, "0x") != 0 && text.compare(i, 2, "0X") != 0) return std::nullopt;
+  i += 2;
+  kmr::exact::Integer m = 0;
+  std::int64_t e = 0, digits = 0;
+  bool point = false;
+  for (; i < text.size() && text[i] != 'p' && text[i] != 'P'; ++i) {
+    const char c = text[i];
+    int d = -1;
+    if (c >= '0' && c <= '9') d = c - '0';
+    else if (c >= 'a' && c <= 'f') d = c - 'a' + 10;
+    else if (c >= 'A' && c <= 'F') d = c - 'A' + 10;
+    else if (c == '.' && !point) {
+      point = true;
+      continue;
+    }
+    if (d < 0) return std::nullopt;
+    m = m * 16 + d;
+    ++digits;
+    if (point) e -= 4;
+  }
+  if (digits == 0 || i + 1 >= text.size()) return std::nullopt;
+  char* end = nullptr;
+  const long long pe = std::strtoll(text.c_str() + i + 1, &end, 10);
+  if (*end != '\0') return std::nullopt;
+  Dyadic x(m, e + pe);
+  return neg ? -x : x;
+}
+
 template <std::size_t D>
 std::vector<ws::XPoint<D>> read(const std::string& path) {
   std::ifstream f(path);
   if (!f) throw kmr::InputError("cannot open " + path);
-  std::vector<ws::DPoint<D>> pts;
+  std::vector<ws::XPoint<D>> pts;
   std::string line;
   for (std::size_t no = 1; std::getline(f, line); ++no) {
     if (auto h = line.find('#'); h != std::string::npos) line.erase(h);
     std::istringstream in(line);
-    ws::DPoint<D> p;
+    ws::XPoint<D> p;
     std::size_t k = 0;
     std::string tok;
     while (k < D && in >> tok) {
+      if (auto x = parse_hex_exact(tok)) {
+        p[k++] = *x;
+        continue;
+      }
       char* end = nullptr;
-      p[k] = std::strtod(tok.c_str(), &end);
-      if (end == tok.c_str() || *end != '\0')
+      const double d = std::strtod(tok.c_str(), &end);
+      if (end == tok.c_str() || *end != '\0' || !std::isfinite(d))
         throw kmr::InputError(path + ":" + std::to_string(no) + ": not a number: " + tok);
-      ++k;
+      p[k++] = Dyadic::from_double(d);
     }
     if (k == 0) continue;
     if (k < D) throw kmr::InputError(path + ":" + std::to_string(no) + ": fewer than D coordinates");
     pts.push_back(p);
   }
-  return ws::to_exact<D>(pts);
+  return pts;
 }
 
 template <std::size_t D>
