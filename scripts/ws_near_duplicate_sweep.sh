@@ -3,6 +3,7 @@
 # axis (k = 30 … 53; k = 53 is 1 ulp) at ρ/β = 1.1/2.2, 1.5/3, 2/4, 3/6, 4/8. Prints one line per
 # run (k, ρ, exit status, |M|, vertices with hex-float coordinates) and the count answered.
 # With JUDGE=<kmr_oracle_ws_judge> every answer is also judged by the CGAL oracle (exact).
+# TMO=<seconds> limits each run (default 600; exit status 124 = timed out).
 # Usage: scripts/ws_near_duplicate_sweep.sh KMR_BINARY [DIM] [KMIN] [KMAX]
 set -u
 kmr=$1
@@ -23,7 +24,7 @@ PY
   for rb in "1.1 2.2" "1.5 3" "2 4" "3 6" "4 8"; do
     set -- $rb
     total=$((total + 1))
-    "$kmr" wellspaced --quiet --dim "$dim" --rho "$1" --beta "$2" "$tmp/in.txt" > "$tmp/out.txt" 2> "$tmp/err.txt"
+    timeout "${TMO:-600}" "$kmr" wellspaced --quiet --dim "$dim" --rho "$1" --beta "$2" "$tmp/in.txt" > "$tmp/out.txt" 2> "$tmp/err.txt"
     rc=$?
     line="k=$k rho=$1 beta=$2 rc=$rc"
     if [ $rc -eq 0 ]; then

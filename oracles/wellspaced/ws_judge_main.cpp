@@ -23,40 +23,6 @@ using kmr::exact::Dyadic;
 
 namespace {
 
-// A hex float "[+-]0x<hex>[.<hex>]p[+-]<dec>" read exactly (any number of digits: `kmr wellspaced`
-// prints coordinates finer than doubles this way, spec/formats.md); nullopt if text is not one.
-std::optional<Dyadic> parse_hex_exact(const std::string& text) {
-  std::size_t i = 0;
-  bool neg = false;
-  if (i < text.size() && (text[i] == '+' || text[i] == '-')) neg = text[i++] == '-';
-  if (text.compare(i, 2, "0x") != 0 && text.compare(i, 2, "0X") != 0) return std::nullopt;
-  i += 2;
-  kmr::exact::Integer m = 0;
-  std::int64_t e = 0, digits = 0;
-  bool point = false;
-  for (; i < text.size() && text[i] != 'p' && text[i] != 'P'; ++i) {
-    const char c = text[i];
-    int d = -1;
-    if (c >= '0' && c <= '9') d = c - '0';
-    else if (c >= 'a' && c <= 'f') d = c - 'a' + 10;
-    else if (c >= 'A' && c <= 'F') d = c - 'A' + 10;
-    else if (c == '.' && !point) {
-      point = true;
-      continue;
-    }
-    if (d < 0) return std::nullopt;
-    m = m * 16 + d;
-    ++digits;
-    if (point) e -= 4;
-  }
-  if (digits == 0 || i + 1 >= text.size()) return std::nullopt;
-  char* end = nullptr;
-  const long long pe = std::strtoll(text.c_str() + i + 1, &end, 10);
-  if (*end != '\0') return std::nullopt;
-  Dyadic x(m, e + pe);
-  return neg ? -x : x;
-}
-
 template <std::size_t D>
 std::vector<ws::XPoint<D>> read(const std::string& path) {
   std::ifstream f(path);
@@ -70,7 +36,7 @@ std::vector<ws::XPoint<D>> read(const std::string& path) {
     std::size_t k = 0;
     std::string tok;
     while (k < D && in >> tok) {
-      if (auto x = parse_hex_exact(tok)) {
+      if (auto x = ws::parse_hex_exact(tok)) {
         p[k++] = *x;
         continue;
       }

@@ -343,7 +343,12 @@ TEST(WsJudge, T3_3_4_NearDuplicatePairsFinerThanDoubles2D) {
       const std::string what = "pair 2^-" + std::to_string(k) + " rho " + std::to_string(rho);
       lib::WellSpacedSet<2> S(in, p);
       std::size_t fine = 0;
-      for (const auto& v : S.vertices()) fine += !v.exact.is_double();
+      for (const auto& v : S.vertices()) {
+        fine += !v.exact.is_double();
+        // the library's exact text (what the CLI prints) read back by the oracle's own reader
+        for (std::size_t i = 0; i < 2; ++i)
+          if (!v.exact.is_double(i)) EXPECT_EQ(ws::parse_hex_exact(v.exact.text(i)), v.exact.coord(i)) << v.exact.text(i);
+      }
       if (k >= 51) EXPECT_GT(fine, 0u) << what;
       std::printf("  %s: |M| = %zu, %zu finer than doubles; %s\n", what.c_str(), S.vertices().size(), fine,
                   judge<2>(S, what).c_str());
