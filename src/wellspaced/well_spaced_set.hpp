@@ -86,7 +86,8 @@ struct GraphOperation {
     friend bool operator==(const Square&, const Square&) = default;
     friend auto operator<=>(const Square&, const Square&) = default;
   };
-  Point<D> v{};
+  Point<D> v{};  // below() of the vertex: exact unless a coordinate is finer than a double (then two
+                 // operations' v may coincide; canonical_graph() names vertices exactly)
   int rank = 0;
   bool fill = false;          // F (else D)
   std::int64_t color = 0;     // fills only
