@@ -1,10 +1,14 @@
 // kmr_oracle_ws_judge: judges a point-set file (e.g. `kmr wellspaced` stdout) with the exact CGAL
 // oracle: ρ-well-spacedness (T3.3.4) and, given the input, size conformity (Lemma 3.3.3).
 // Usage: kmr_oracle_ws_judge --dim D (--rho R | --rho-squared Q) [--input IN] OUTPUT
-//   Files: one point per line, D coordinates (read as doubles, converted exactly), optionally
+//   Files: one point per line, D coordinates (decimal: read as doubles, converted exactly; hex
+//   floats "0x1.8p-1" of any length: read exactly, as `kmr wellspaced` prints coordinates finer
+//   than doubles), optionally
 //   followed by more columns (ignored, e.g. the 0/1 Steiner flag); '#' starts a comment.
 // Prints one line per verdict; exit 0 if all hold, 1 if one fails, 2 on bad input.
+#include <cmath>
 #include <cstdio>
+#include <optional>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -23,26 +27,30 @@ template <std::size_t D>
 std::vector<ws::XPoint<D>> read(const std::string& path) {
   std::ifstream f(path);
   if (!f) throw kmr::InputError("cannot open " + path);
-  std::vector<ws::DPoint<D>> pts;
+  std::vector<ws::XPoint<D>> pts;
   std::string line;
   for (std::size_t no = 1; std::getline(f, line); ++no) {
     if (auto h = line.find('#'); h != std::string::npos) line.erase(h);
     std::istringstream in(line);
-    ws::DPoint<D> p;
+    ws::XPoint<D> p;
     std::size_t k = 0;
     std::string tok;
     while (k < D && in >> tok) {
+      if (auto x = ws::parse_hex_exact(tok)) {
+        p[k++] = *x;
+        continue;
+      }
       char* end = nullptr;
-      p[k] = std::strtod(tok.c_str(), &end);
-      if (end == tok.c_str() || *end != '\0')
+      const double d = std::strtod(tok.c_str(), &end);
+      if (end == tok.c_str() || *end != '\0' || !std::isfinite(d))
         throw kmr::InputError(path + ":" + std::to_string(no) + ": not a number: " + tok);
-      ++k;
+      p[k++] = Dyadic::from_double(d);
     }
     if (k == 0) continue;
     if (k < D) throw kmr::InputError(path + ":" + std::to_string(no) + ": fewer than D coordinates");
     pts.push_back(p);
   }
-  return ws::to_exact<D>(pts);
+  return pts;
 }
 
 template <std::size_t D>

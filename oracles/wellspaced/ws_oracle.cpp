@@ -9,6 +9,8 @@
 // convex polytope cut by those supporting planes is the edge through a and b). Crossings of
 // several vertex pairs on one edge line coincide and are merged.
 #include <algorithm>
+#include <cstdlib>
+#include <optional>
 #include <map>
 #include <set>
 #include <string>
@@ -18,6 +20,40 @@
 #include "ws_oracle.hpp"
 
 namespace kmr::oracle::ws {
+
+// The exact hex-float reader (ws_oracle.hpp).
+std::optional<exact::Dyadic> parse_hex_exact(const std::string& text) {
+  std::size_t i = 0;
+  bool neg = false;
+  if (i < text.size() && (text[i] == '+' || text[i] == '-')) neg = text[i++] == '-';
+  if (text.compare(i, 2, "0x") != 0 && text.compare(i, 2, "0X") != 0) return std::nullopt;
+  i += 2;
+  exact::Integer m = 0;
+  std::int64_t e = 0, digits = 0;
+  bool point = false;
+  for (; i < text.size() && text[i] != 'p' && text[i] != 'P'; ++i) {
+    const char c = text[i];
+    int d = -1;
+    if (c >= '0' && c <= '9') d = c - '0';
+    else if (c >= 'a' && c <= 'f') d = c - 'a' + 10;
+    else if (c >= 'A' && c <= 'F') d = c - 'A' + 10;
+    else if (c == '.' && !point) {
+      point = true;
+      continue;
+    }
+    if (d < 0) return std::nullopt;
+    m = m * 16 + d;
+    ++digits;
+    if (point) e -= 4;
+  }
+  if (digits == 0 || i + 1 >= text.size()) return std::nullopt;
+  char* end = nullptr;
+  const long long pe = std::strtoll(text.c_str() + i + 1, &end, 10);
+  if (*end != '\0') return std::nullopt;
+  exact::Dyadic x(m, e + pe);
+  return neg ? -x : x;
+}
+
 
 using detail::Q;
 

@@ -30,6 +30,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -45,6 +46,11 @@ using DPoint = std::array<double, D>;  // convenience input, converted exactly
 
 template <std::size_t D>
 std::vector<XPoint<D>> to_exact(const std::vector<DPoint<D>>& pts);
+
+// A hex float "[+-]0x<hex>[.<hex>]p[+-]<dec>" read exactly, any number of digits (`kmr wellspaced`
+// prints coordinates finer than doubles this way, spec/formats.md); nullopt if text is not one.
+// Its own digit loop (shares nothing with the library's writer, VertexPoint::text).
+std::optional<exact::Dyadic> parse_hex_exact(const std::string& text);
 
 // ρ given by its square, an exact rational num/den (num, den > 0).
 struct Rho {

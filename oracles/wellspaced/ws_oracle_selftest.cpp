@@ -53,6 +53,20 @@ const Dyadic kEps60 = Dyadic::pow2(-60);
 
 // ---- ρ-well-spacedness, hand-derived (T3.3.4's first half, as judged) ----
 
+// The exact hex-float reader (for `kmr wellspaced` coordinates finer than doubles), on hand-derived
+// values: 0x1.8p-1 = 3/4; 0x1.00000000000006a668p-1 (18 fraction digits, 72 bits) =
+// (16^18 + 0x6a668)·2^-73; 0x1.0000000000001p-1 = ½ + 2^-53 (one ulp); not-hex texts are refused.
+TEST(WsOracle, HexFloatReaderIsExact) {
+  EXPECT_EQ(ws::parse_hex_exact("0x1.8p-1"), Dyadic(3) * Dyadic::pow2(-2));
+  kmr::exact::Integer m = kmr::exact::Integer(1) << 72;
+  m += 0x6a668;
+  EXPECT_EQ(ws::parse_hex_exact("0x1.00000000000006a668p-1"), Dyadic(m, -73));
+  EXPECT_EQ(ws::parse_hex_exact("0x1.0000000000001p-1"), Dyadic::pow2(-1) + Dyadic::pow2(-53));
+  EXPECT_EQ(ws::parse_hex_exact("-0x1p+2"), Dyadic(-4));
+  EXPECT_EQ(ws::parse_hex_exact("0x0p+0"), Dyadic(0));
+  for (const char* bad : {"0.5", "0x", "0x1.8", "0x1.8p", "0x1.gp0", "0x1.8p1z"}) EXPECT_FALSE(ws::parse_hex_exact(bad)) << bad;
+}
+
 TEST(WsOracle, T3_3_4_Grid2DRatioIsExactlyInvSqrt2) {
   RecordProperty("claim", "T3.3.4");
   // Interior cells are squares of side h centred at the vertex; boundary cells are the halves or

@@ -27,7 +27,7 @@ void compare_with_scratch(const std::vector<Point<D>>& cur, const WellSpacedSet<
   auto a = ws.vertices(), b = fresh.vertices();
   RC_ASSERT(a.size() == b.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
-    RC_ASSERT(a[i].x == b[i].x);
+    RC_ASSERT(a[i].exact == b[i].exact);
     RC_ASSERT(a[i].is_steiner == b[i].is_steiner);
   }
   RC_ASSERT(ws.tree_internal_nodes() == fresh.tree_internal_nodes());

@@ -25,7 +25,7 @@ bool same(const WellSpacedSet<D>& a, const WellSpacedSet<D>& b) {
   auto x = a.vertices(), y = b.vertices();
   if (x.size() != y.size()) return false;
   for (std::size_t i = 0; i < x.size(); ++i)
-    if (x[i].x != y[i].x || x[i].is_steiner != y[i].is_steiner) return false;
+    if (!(x[i].exact == y[i].exact) || x[i].is_steiner != y[i].is_steiner) return false;
   return a.canonical_graph() == b.canonical_graph();
 }
 

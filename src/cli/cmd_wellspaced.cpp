@@ -64,7 +64,7 @@ int run(const Args& args, const std::string& input_path, Params params) {
       scratch_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       auto a = ws.vertices(), b = fresh.vertices();
       bool same = a.size() == b.size();
-      for (std::size_t i = 0; same && i < a.size(); ++i) same = a[i].x == b[i].x && a[i].is_steiner == b[i].is_steiner;
+      for (std::size_t i = 0; same && i < a.size(); ++i) same = a[i].exact == b[i].exact && a[i].is_steiner == b[i].is_steiner;
       if (!same) {
         std::cerr << "kmr wellspaced: check failed after " << u.where << ": output differs from a from-scratch run ("
                   << a.size() << " vs " << b.size() << " vertices)\n";
@@ -90,7 +90,11 @@ int run(const Args& args, const std::string& input_path, Params params) {
   }
   progress.done();
   for (const auto& v : ws.vertices()) {
-    for (std::size_t i = 0; i < D; ++i) std::printf("%.17g ", v.x[i]);
+    // doubles as %.17g; a coordinate finer than a double (near-duplicate inputs) as an exact hex
+    // float (spec/formats.md)
+    for (std::size_t i = 0; i < D; ++i)
+      if (v.exact.is_double(i)) std::printf("%.17g ", v.x[i]);
+      else std::printf("%s ", v.exact.text(i).c_str());
     std::printf("%d\n", v.is_steiner ? 1 : 0);
   }
   if (auto sp = args.value("stats")) {
@@ -137,7 +141,8 @@ int wellspaced_command(const Argv& argv) {
                  "  --svg       (2D) draw the final output to FILE: Voronoi cells clipped to [0,1]^2, input\n"
                  "              vertices filled, Steiner vertices open\n"
                  "  --quiet     no progress on stderr (shown only when stderr is a terminal)\n"
-                 "stdout: the output vertices, 'x1 .. xD flag' with %.17g coordinates, flag 1 = Steiner.\n"
+                 "stdout: the output vertices, 'x1 .. xD flag' with %.17g coordinates, flag 1 = Steiner;\n"
+                 "a coordinate finer than a double (near-duplicate inputs) is an exact hex float (0x1.<hex>p<e>).\n"
                  "Bad input: a message naming the line, exit status 2, nothing applied.\n";
     return 0;
   }

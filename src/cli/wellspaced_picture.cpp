@@ -45,7 +45,7 @@ std::string wellspaced_picture(const wellspaced::WellSpacedSet<2>& ws, const std
   for (const auto& v : vs) {
     inputs += !v.is_steiner;
     std::vector<P> poly = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-    for (const auto& u : ws.clipped_voronoi_neighbors(v.x)) poly = clip(poly, v.x, u);
+    for (const auto& u : ws.clipped_voronoi_neighbors(v.exact)) poly = clip(poly, v.x, u.below());  // a picture: doubles
     std::vector<std::pair<double, double>> px;
     for (const P& p : poly) px.emplace_back(X(p[0]), Y(p[1]));
     d.polygon(px, cell, {{"class", "cell"}});

@@ -22,6 +22,7 @@
 
 #include "geometry/point.hpp"
 #include "exact/interval_nt.hpp"
+#include "wellspaced/vertex_point.hpp"
 
 namespace kmr::wellspaced {
 
@@ -54,6 +55,50 @@ std::array<NT, D> relative_to(const std::array<double, D>& p, const std::array<d
 }
 template <std::size_t D>
 QPoint<D> to_q(const std::array<double, D>& p) { return point_in<Q, D>(p); }
+
+// The exact rational of a dyadic m·2^e.
+inline Q to_q(const exact::Dyadic& x) {
+  Q q(x.mantissa());
+  auto* r = q.backend().data();
+  const std::int64_t e = x.exponent();
+  if (e > 0) mpq_mul_2exp(r, r, static_cast<mp_bitcnt_t>(e));
+  else if (e < 0) mpq_div_2exp(r, r, static_cast<mp_bitcnt_t>(-e));
+  return q;
+}
+// A Q (exact) or its enclosure (IntervalNT).
+template <class NT>
+NT from_q(const Q& x) {
+  if constexpr (is_interval_v<NT>) return exact::enclose(x);
+  else return x;
+}
+// The same for vertices (VertexPoint: doubles as above; finer coordinates through Q).
+template <class NT, std::size_t D>
+std::array<NT, D> point_in(const VertexPoint<D>& p) {
+  if (p.is_double()) return point_in<NT, D>(p.below());
+  std::array<NT, D> q;
+  for (std::size_t i = 0; i < D; ++i) q[i] = from_q<NT>(to_q(p.coord(i)));
+  return q;
+}
+template <std::size_t D>
+QPoint<D> to_q(const VertexPoint<D>& p) { return point_in<Q, D>(p); }
+// |ab|² as a double estimate (orders and sizes work only; never decides): for doubles the plain
+// double sum (as before VertexPoint), else the exact value rounded.
+template <std::size_t D>
+double approx_dist2(const VertexPoint<D>& a, const VertexPoint<D>& b) {
+  if (a.is_double() && b.is_double()) {
+    double nd = 0;
+    for (std::size_t i = 0; i < D; ++i) nd += (a.below()[i] - b.below()[i]) * (a.below()[i] - b.below()[i]);
+    return nd;
+  }
+  return geometry::dist2(to_q<D>(a), to_q<D>(b)).template convert_to<double>();
+}
+template <class NT, std::size_t D>
+std::array<NT, D> relative_to(const VertexPoint<D>& p, const VertexPoint<D>& v) {
+  if (p.is_double() && v.is_double()) return relative_to<NT, D>(p.below(), v.below());
+  std::array<NT, D> q;
+  for (std::size_t i = 0; i < D; ++i) q[i] = from_q<NT>(to_q(p.coord(i)) - to_q(v.coord(i)));
+  return q;
+}
 
 template <class NT, std::size_t D>
 IPoint<D> enclose(const std::array<NT, D>& x) {

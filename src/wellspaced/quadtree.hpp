@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "exact/error.hpp"
+#include "wellspaced/vertex_point.hpp"
 
 namespace kmr::wellspaced {
 
@@ -71,6 +72,19 @@ template <std::size_t D>
 inline Key<D> cell_of(const std::array<double, D>& x, int level) {
   Key<D> c{level, {}};
   for (std::size_t i = 0; i < D; ++i) c.k[i] = cell_index<D>(x[i], level);
+  return c;
+}
+
+// The cell of a vertex (exact also for coordinates finer than doubles: ⌊x·2^L⌋ of the dyadic).
+template <std::size_t D>
+inline Key<D> cell_of(const VertexPoint<D>& x, int level) {
+  if (x.is_double()) return cell_of<D>(x.below(), level);
+  Key<D> c{level, {}};
+  const std::uint64_t n = std::uint64_t(1) << level;
+  for (std::size_t i = 0; i < D; ++i) {
+    std::uint64_t k = x.coord(i).shifted(level).floor().template convert_to<std::uint64_t>();
+    c.k[i] = k >= n ? n - 1 : k;
+  }
   return c;
 }
 
@@ -164,8 +178,9 @@ class Quadtree {
   bool leaf(const K& c) const { return exists(c) && !internal(c); }
   std::size_t internal_count() const { return internal_.size(); }
 
-  // The leaf containing x.
-  K locate(const Pt& x) const {
+  // The leaf containing x (a double point or a VertexPoint).
+  template <class P>
+  K locate(const P& x) const {
     K c{0, {}};
     while (internal(c)) c = cell_of<D>(x, c.level + 1);
     return c;

@@ -36,14 +36,14 @@ UpdateStats WellSpacedSet<D>::erase(const Point<D>& p) {
 template <std::size_t D>
 std::vector<Vertex<D>> WellSpacedSet<D>::vertices() const {
   std::vector<Vertex<D>> out;
-  for (const auto& [x, V] : impl_->vtx) out.push_back({x, V.steiner});
+  for (const auto& [x, V] : impl_->vtx) out.push_back({x.below(), V.steiner, x});
   return out;
 }
 template <std::size_t D>
 std::vector<Point<D>> WellSpacedSet<D>::input() const {
   std::vector<Point<D>> out;
   for (const auto& [x, V] : impl_->vtx)
-    if (!V.steiner) out.push_back(x);
+    if (!V.steiner) out.push_back(x.below());  // inputs are doubles
   return out;
 }
 template <std::size_t D>
@@ -71,7 +71,7 @@ std::vector<std::string> WellSpacedSet<D>::tree_leaves() const {
   return out;
 }
 template <std::size_t D>
-std::vector<Point<D>> WellSpacedSet<D>::clipped_voronoi_neighbors(const Point<D>& v, std::size_t* squares_read) const {
+std::vector<VertexPoint<D>> WellSpacedSet<D>::clipped_voronoi_neighbors(const VertexPoint<D>& v, std::size_t* squares_read) const {
   if (!impl_->vtx.count(v)) throw InputError("clipped_voronoi_neighbors: " + fmt_point<D>(v) + " is not an output vertex");
   Time end;
   end.rank = std::numeric_limits<int>::max();

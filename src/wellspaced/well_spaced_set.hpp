@@ -5,7 +5,8 @@
 //
 // Guarantees (each is checked by a test in tests/wellspaced or proptests/wellspaced):
 //  * Every decision is exact: input doubles convert exactly to rationals; Steiner vertices are
-//    doubles (dyadic, ≤ 53 significant bits), so vertices() reports them without rounding.
+//    doubles where the picking region holds one, else finer dyadics (VertexPoint<D>; issue 11),
+//    and vertices() reports them without rounding (Vertex::exact).
 //  * Output: a ρ-well-spaced superset of the input (Vor(v) ∩ [0,1]^D inside the closed ball of
 //    radius ρ·NN(v) for every vertex v) that is size-conforming with c = 2ρ/(ρ−1) (Thm 3.3.4,
 //    Lemma 3.3.3).
@@ -26,10 +27,9 @@
 #include <utility>
 #include <vector>
 
-namespace kmr::wellspaced {
+#include "wellspaced/vertex_point.hpp"
 
-template <std::size_t D>
-using Point = std::array<double, D>;
+namespace kmr::wellspaced {
 
 // Parameters ρ, β (exact dyadics: every double is one). κ and ℓ(r) are derived so that
 // Lemma 3.3.12 holds: ℓ(r) = the largest power of two < ρ^r/√D, κ = ⌊1 + 6βρ√D⌋ + 1
@@ -42,8 +42,9 @@ struct Params {
 
 template <std::size_t D>
 struct Vertex {
-  Point<D> x;
+  Point<D> x;                // below(): equal to the vertex iff exact.is_double()
   bool is_steiner = false;
+  VertexPoint<D> exact;      // the vertex, exactly
 };
 
 // Counts of one run (construction or the whole lifetime).
@@ -56,6 +57,7 @@ struct Stats {
   std::uint64_t steiner = 0;                        // Steiner vertices in the output
   std::uint64_t ops = 0;                            // operations in the computation graph
   std::uint64_t exact_fallbacks = 0;                // clipped-Voronoi calls and fills the interval tier could not decide
+  std::uint64_t dyadic_steiner = 0;                 // Steiner vertices finer than doubles (pick step 5)
   std::uint64_t squares = 0;                        // quadtree leaves
   int min_rank = 0, max_rank = 0;
   double seconds = 0;
@@ -84,7 +86,8 @@ struct GraphOperation {
     friend bool operator==(const Square&, const Square&) = default;
     friend auto operator<=>(const Square&, const Square&) = default;
   };
-  Point<D> v{};
+  Point<D> v{};  // below() of the vertex: exact unless a coordinate is finer than a double (then two
+                 // operations' v may coincide; canonical_graph() names vertices exactly)
   int rank = 0;
   bool fill = false;          // F (else D)
   std::int64_t color = 0;     // fills only
@@ -130,7 +133,7 @@ class WellSpacedSet {
 
   // QTClippedVoronoi(v, β) on the current output (every vertex visible): the β-clipped Voronoi
   // neighbours of output vertex v, sorted; *squares_read (if given) is the number of squares read.
-  std::vector<Point<D>> clipped_voronoi_neighbors(const Point<D>& v, std::size_t* squares_read = nullptr) const;
+  std::vector<VertexPoint<D>> clipped_voronoi_neighbors(const VertexPoint<D>& v, std::size_t* squares_read = nullptr) const;
 
   const Params& params() const;
   int kappa() const;

@@ -33,12 +33,13 @@ auto WellSpacedSet<D>::Impl::axis_gap(const IntervalNT& c, const IntervalNT& lo,
 // squares has relative error < (D+3)·2^-53 < 2^-48; deeper squares go through intervals.
 template <std::size_t D>
 auto WellSpacedSet<D>::Impl::box_dist2_lower(const Pt& v, const IPoint<D>& vi, const K& s) -> double {
-  if (s.level <= 52) {
+  if (s.level <= 52 && v.is_double()) {
     double h = std::ldexp(1.0, -s.level), d = 0;
     for (std::size_t i = 0; i < D; ++i) {
+      const double vx = v.below()[i];
       double lo = static_cast<double>(s.k[i]) * h, hi = lo + h, g = 0;
-      if (v[i] < lo) g = lo - v[i];
-      else if (v[i] > hi) g = v[i] - hi;
+      if (vx < lo) g = lo - vx;
+      else if (vx > hi) g = vx - hi;
       d += g * g;
     }
     return d * (1 - 0x1p-48);
@@ -76,9 +77,10 @@ auto WellSpacedSet<D>::Impl::meets_certificate_region(const Polytope<D, NT>& C, 
     if (!undecided) return false;
   }
   auto b = square_bounds(s);
+  const IPoint<D> vabs = point_in<IntervalNT, D>(v);
   for (std::size_t i = 0; i < D; ++i) {
-    b[i].first -= IntervalNT(v[i]);
-    b[i].second -= IntervalNT(v[i]);
+    b[i].first -= vabs[i];
+    b[i].second -= vabs[i];
   }
   for (std::size_t j = 0; j < C.v.size(); ++j) {
     const auto& c = C.v[j];
@@ -90,12 +92,13 @@ auto WellSpacedSet<D>::Impl::meets_certificate_region(const Polytope<D, NT>& C, 
     IntervalNT radius = IntervalNT::hull(vb[j].r_lo, vb[j].r_hi);
     if (gap.hi() < radius.lo()) return true;
     int sg = filtered_sign<NT>(gap - radius, [&] {
+      const std::array<NT, D> vn = point_in<NT, D>(v);
       const NT side(std::ldexp(1.0, -s.level));  // 2^-L: a double (L ≤ 56)
       NT g2 = 0;
       for (std::size_t i = 0; i < D; ++i) {
         // k < 2^56 may not be a double: k = hi·2^28 + lo with both halves exact
         const std::uint64_t k = s.k[i];
-        NT lo = (NT(static_cast<double>(k >> 28)) * NT(0x1p28) + NT(static_cast<double>(k & 0xFFFFFFFu))) * side - NT(v[i]);
+        NT lo = (NT(static_cast<double>(k >> 28)) * NT(0x1p28) + NT(static_cast<double>(k & 0xFFFFFFFu))) * side - vn[i];
         NT hi = lo + side, g = 0;
         if (c.x[i] < lo) g = lo - c.x[i];
         else if (c.x[i] > hi) g = c.x[i] - hi;
@@ -177,8 +180,7 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
     // box half-width R ≥ β·NN: β·NN rounded up to 8 significant bits, from doubles of the chosen
     // nearest vertex (so R is the same in both tiers), checked exactly
     NT r2 = sq<NT>(params.beta) * nn2;
-    double nd = 0;
-    for (std::size_t i = 0; i < D; ++i) nd += (res.nn[i] - v[i]) * (res.nn[i] - v[i]);
+    double nd = approx_dist2<D>(res.nn, v);
     double bn = params.beta * std::sqrt(nd);
     int e = static_cast<int>(std::ceil(std::log2(bn))) - 8;
     double R = std::ldexp(std::ceil(std::ldexp(bn, -e)), e);

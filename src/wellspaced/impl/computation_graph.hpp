@@ -145,7 +145,7 @@ auto WellSpacedSet<D>::Impl::computation_graph() const -> std::vector<GraphOpera
   std::vector<GraphOperation<D>> out;
   for (const auto& [k, op] : ops) {
     GraphOperation<D> g;
-    g.v = k.v;
+    g.v = k.v.below();
     g.rank = k.t.rank;
     g.fill = k.t.type == 1;
     g.color = k.t.color;
@@ -155,7 +155,7 @@ auto WellSpacedSet<D>::Impl::computation_graph() const -> std::vector<GraphOpera
     std::sort(g.targets.begin(), g.targets.end());
     for (const K& s : op.reads) g.reads.push_back(square(s));
     std::sort(g.reads.begin(), g.reads.end());
-    for (const Pt& w : op.steiners) g.steiners.emplace_back(w, square(tree.locate(w)));
+    for (const Pt& w : op.steiners) g.steiners.emplace_back(w.below(), square(tree.locate(w)));
     std::sort(g.steiners.begin(), g.steiners.end());
     out.push_back(std::move(g));
   }

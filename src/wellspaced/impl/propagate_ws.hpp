@@ -177,7 +177,7 @@ auto WellSpacedSet<D>::Impl::redo_input_dispatch(const Pt& u) -> void {
 }
 
 template <std::size_t D>
-auto WellSpacedSet<D>::Impl::insert(const Pt& p) -> UpdateStats {
+auto WellSpacedSet<D>::Impl::insert(const Point<D>& p) -> UpdateStats {
   auto t0 = std::chrono::steady_clock::now();
   validate_point<D>(p, "inserted point");
   if (vtx.count(p) && !vtx.at(p).steiner) throw InputError("inserted point " + fmt_point<D>(p) + " is already an input point");
@@ -217,7 +217,7 @@ auto WellSpacedSet<D>::Impl::insert(const Pt& p) -> UpdateStats {
 }
 
 template <std::size_t D>
-auto WellSpacedSet<D>::Impl::erase(const Pt& p) -> UpdateStats {
+auto WellSpacedSet<D>::Impl::erase(const Point<D>& p) -> UpdateStats {
   auto t0 = std::chrono::steady_clock::now();
   validate_point<D>(p, "deleted point");
   auto it = vtx.find(p);

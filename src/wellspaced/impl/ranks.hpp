@@ -93,7 +93,12 @@ auto WellSpacedSet<D>::Impl::color(const Pt& w, int r) -> std::int64_t {
   int e = ell(r);
   std::int64_t c = 0;
   for (std::size_t i = 0; i < D; ++i) {
-    double f = std::floor(std::ldexp(w[i], -e));
+    if (!w.is_double()) {  // ⌊w_i / 2^e⌋ mod κ of the exact dyadic
+      exact::Integer f = w.coord(i).shifted(-e).floor() % kappa;
+      c = c * kappa + f.template convert_to<std::int64_t>();
+      continue;
+    }
+    double f = std::floor(std::ldexp(w.below()[i], -e));
     auto ci = static_cast<std::int64_t>(std::fmod(f, double(kappa)));
     c = c * kappa + ci;
   }

@@ -58,6 +58,14 @@ std::string fmt_point(const Point<D>& x) {
 }
 
 template <std::size_t D>
+std::string fmt_point(const VertexPoint<D>& x) {
+  if (x.is_double()) return fmt_point<D>(x.below());
+  std::string s;
+  for (std::size_t i = 0; i < D; ++i) s += (i ? " " : "") + x.text(i);
+  return s;
+}
+
+template <std::size_t D>
 void validate_point(const Point<D>& p, const std::string& where) {
   for (std::size_t i = 0; i < D; ++i) {
     if (!std::isfinite(p[i])) throw InputError(where + ": coordinate " + std::to_string(i + 1) + " is not finite");
@@ -71,7 +79,7 @@ void validate_point(const Point<D>& p, const std::string& where) {
 template <std::size_t D>
 struct WellSpacedSet<D>::Impl {
   using K = Key<D>;
-  using Pt = Point<D>;
+  using Pt = VertexPoint<D>;  // a vertex (doubles, or finer dyadics: vertex_point.hpp)
   struct OpKey {
     Time t;
     Pt v;
@@ -92,7 +100,7 @@ struct WellSpacedSet<D>::Impl {
     K leaf;
   };
   struct Leaf {
-    const Pt* input = nullptr;
+    const Point<D>* input = nullptr;  // input vertices are doubles
     std::vector<Pt> verts;  // vertices (input and Steiner) inside
     K key;
     // cache of tree.adjacent_leaves(key), valid if adjacent_ok; the pointers stay valid while it is
@@ -134,7 +142,7 @@ struct WellSpacedSet<D>::Impl {
   void refuse_out_of_reach(int depth) const;
 
   // ---------- vertices and squares: impl/vertex_store.hpp ----------
-  const Pt* leaf_input(const K& leaf) const;
+  const Point<D>* leaf_input(const K& leaf) const;
   Leaf& leaf_of(const K& s);
   const std::vector<Leaf*>& adjacent_leaves(Leaf& L);
   void place(const Pt& x);
@@ -177,7 +185,7 @@ struct WellSpacedSet<D>::Impl {
   CVResult clipped_voronoi_neighbors(const Pt& v, const Time& t);
 
   // ---------- StableWS: Dispatch and Fill (Fig. 3.4): impl/stable_ws.hpp ----------
-  void construct(const std::vector<Pt>& input);
+  void construct(const std::vector<Point<D>>& input);
   void dispatch(const OpKey& k, Op& op);
   template <class NT>
   Pt pick(const std::array<NT, D>& vq, const Pt& v, const Pt& nn, const NT& nn2, const Polytope<D, NT>& P);
@@ -185,12 +193,15 @@ struct WellSpacedSet<D>::Impl {
   // lexicographic order) with in_region(w) among the doubles of the box of P (relative to v)
   // ∩ [v − B, v + B] ∩ [0,1]^D. complete: the rings covered that box (so a miss is a proof).
   struct Enumeration {
-    std::optional<Pt> w;
+    std::optional<Point<D>> w;
     bool complete = false;
     std::uint64_t tried = 0;
   };
   template <class InRegion>
-  static Enumeration pick_by_enumeration(const Pt& v, const std::array<Q, D>& p, const InRegion& in_region, const Polytope<D, Q>& P, double B);
+  static Enumeration pick_by_enumeration(const QPoint<D>& v, const std::array<Q, D>& p, const InRegion& in_region, const Polytope<D, Q>& P, double B);
+  // Step 5 of pick: p rounded to finer and finer dyadic grids until in the picking region.
+  template <class InRegion>
+  Pt pick_dyadic(const QPoint<D>& p, double nn, const InRegion& in_region);
   template <class NT>
   static double floor_div_pow2(const NT& x, int e);
   template <class NT>
@@ -206,8 +217,8 @@ struct WellSpacedSet<D>::Impl {
   std::vector<std::pair<OpKey, Op*>> ops_of(const Pt& v);
   std::vector<Pt> apply_tree_change(const typename Quadtree<D>::Change& ch);
   void redo_input_dispatch(const Pt& u);
-  UpdateStats insert(const Pt& p);
-  UpdateStats erase(const Pt& p);
+  UpdateStats insert(const Point<D>& p);
+  UpdateStats erase(const Point<D>& p);
 
 };
 

@@ -7,7 +7,7 @@
 namespace kmr::wellspaced {
 
 template <std::size_t D>
-auto WellSpacedSet<D>::Impl::leaf_input(const K& leaf) const -> const Pt* {
+auto WellSpacedSet<D>::Impl::leaf_input(const K& leaf) const -> const Point<D>* {
   auto it = leaves.find(leaf);
   return it == leaves.end() ? nullptr : it->second.input;
 }
@@ -40,7 +40,7 @@ auto WellSpacedSet<D>::Impl::place(const Pt& x) -> void {
   L.verts.push_back(x);
   if (!V.steiner) {
     KMR_CHECK(L.input == nullptr, "crowding violated: two inputs in one square");
-    L.input = &vtx.find(x)->first;
+    L.input = &vtx.find(x)->first.below();  // inputs are doubles
   }
 }
 
