@@ -39,32 +39,43 @@ Point<2> close_to(const Point<2>& p, int k) {
   return q;
 }
 
+// The output's vertices for the brute-force judge, which reads doubles only: a vertex finer than a
+// double (issue 11 §1) is counted in `fine` and its output is not judged (a FAIL, never a verdict on
+// rounded points). The audit's inputs give none today (not reached by a test).
+template <std::size_t D>
+std::vector<Point<D>> double_points(const WellSpacedSet<D>& ws, int& fine) {
+  std::vector<Point<D>> M;
+  for (auto& x : ws.vertices()) {
+    if (!x.exact.is_double()) ++fine;
+    M.push_back(x.x);
+  }
+  return M;
+}
+
 Verdict t334(const Options& o) {
   Verdict v;
-  int ok = 0, total = 0;
+  int ok = 0, total = 0, fine = 0;
   std::size_t n2 = o.quick ? 25 : 80;
   for (auto k : {gen::Kind::uniform, gen::Kind::clustered, gen::Kind::grid, gen::Kind::close_pair, gen::Kind::boundary}) {
     auto in = gen::points<2>(k, n2, o.seed);
     WellSpacedSet<2> ws(in);
-    std::vector<Point<2>> M;
-    for (auto& x : ws.vertices()) M.push_back(x.x);
-    M = measured(o, "T3.3.4 output 2D", std::move(M));
+    std::vector<Point<2>> M = measured(o, "T3.3.4 output 2D", double_points(ws, fine));
     ++total;
-    ok += kmr::wsjudge::is_well_spaced<2>(M, ws.params().rho) && kmr::wsjudge::is_size_conforming<2>(in, M, ws.params().rho);
+    ok += fine == 0 && kmr::wsjudge::is_well_spaced<2>(M, ws.params().rho) && kmr::wsjudge::is_size_conforming<2>(in, M, ws.params().rho);
     v.figure(std::string("2D ") + gen::name(k) + " |M|/|N|", fmt(double(M.size()) / in.size()));
   }
   {
     auto in = gen::points<3>(gen::Kind::uniform, o.quick ? 8 : 20, o.seed);
     WellSpacedSet<3> ws(in);
-    std::vector<Point<3>> M;
-    for (auto& x : ws.vertices()) M.push_back(x.x);
+    std::vector<Point<3>> M = double_points(ws, fine);
     ++total;
-    ok += kmr::wsjudge::is_well_spaced<3>(M, ws.params().rho) && kmr::wsjudge::is_size_conforming<3>(in, M, ws.params().rho);
+    ok += fine == 0 && kmr::wsjudge::is_well_spaced<3>(M, ws.params().rho) && kmr::wsjudge::is_size_conforming<3>(in, M, ws.params().rho);
     v.figure("3D uniform |M|/|N|", fmt(double(M.size()) / in.size()));
   }
   v.pass = ok == total;
   v.summary = std::to_string(ok) + "/" + std::to_string(total) +
               " outputs rho-well-spaced and size-conforming (exact brute force, rho = 1.5)";
+  if (fine > 0) v.summary += "; " + std::to_string(fine) + " vertices finer than doubles, not judged";
   return v;
 }
 
