@@ -151,6 +151,8 @@ const Certificate& MotionSimulator::certificate(CertificateId id) const {
   Polynomial p(std::vector<Integer>{Integer(r.c0), Integer(r.c1)});
   std::optional<Integer> failure;
   if (r.scheduled) failure = Integer(r.failure);
+  // A pending record is a popped linear one: its only root lay in the interval just processed, so
+  // this finds no later failure (kept general rather than assumed; not reached by a test).
   if (r.pending)
     if (auto k = machine_failure_uncounted(r)) failure = Integer(*k);
   poly::LatticeRootSolver solver(p, bits_);
@@ -293,7 +295,8 @@ std::optional<Integer> MotionSimulator::next_failure_interval() const {
     if (queue_.empty()) return std::nullopt;
     return queue_.begin()->first;
   }
-  // The earliest live entry, found without changing the queue (pending records included).
+  // The earliest live entry, found without changing the queue (pending records included; a pending
+  // linear record's only root was in the interval just processed, so today none of them yields one).
   std::optional<std::int64_t> best;
   for (CertificateId id : pending_)
     if (slot_of_id_[id] != kNoRecord && records_[slot_of_id_[id]].pending)
