@@ -9,6 +9,7 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <stdexcept>
 
 namespace kmr::wsjudge {
 
@@ -26,18 +27,54 @@ Q dotq(const V<D>& a, const V<D>& b) {
 }
 
 template <std::size_t D>
-V<D> rel(const std::array<double, D>& p, const std::array<double, D>& v) {
+V<D> rel(const V<D>& p, const V<D>& v) {
   V<D> x;
-  for (std::size_t i = 0; i < D; ++i) x[i] = Q(p[i]) - Q(v[i]);
+  for (std::size_t i = 0; i < D; ++i) x[i] = p[i] - v[i];
   return x;
 }
 
+// Points as the judges read them: exact, and rounded to doubles for near()'s filters (which need
+// to know whether the rounding was exact).
 template <std::size_t D>
-std::string fmt(const std::array<double, D>& p) {
+struct Points {
+  std::vector<V<D>> q;
+  std::vector<std::array<double, D>> d;
+  bool doubles = true;  // every coordinate is a double: d is exact
+};
+template <std::size_t D>
+Points<D> points(const std::vector<std::array<double, D>>& M) {
+  Points<D> P{{}, M, true};
+  for (const auto& p : M) {
+    V<D> x;
+    for (std::size_t i = 0; i < D; ++i) x[i] = Q(p[i]);
+    P.q.push_back(x);
+  }
+  return P;
+}
+template <std::size_t D>
+Points<D> points(const std::vector<V<D>>& M) {
+  Points<D> P{M, {}, true};
+  bool all = true;
+  for (const auto& x : M) {
+    std::array<double, D> p;
+    for (std::size_t i = 0; i < D; ++i) {
+      p[i] = x[i].template convert_to<double>();
+      if (!std::isfinite(p[i])) throw std::invalid_argument("wsjudge: a coordinate beyond the range of doubles");
+      all = all && Q(p[i]) == x[i];
+    }
+    P.d.push_back(p);
+  }
+  P.doubles = all;
+  return P;
+}
+
+template <std::size_t D>
+std::string fmt(const V<D>& x) {  // "%a" of each coordinate; "~" marks one that is not a double
   std::string s = "(";
-  char buf[40];
+  char buf[48];
   for (std::size_t i = 0; i < D; ++i) {
-    std::snprintf(buf, sizeof buf, "%s%a", i ? " " : "", p[i]);
+    const double d = x[i].template convert_to<double>();
+    std::snprintf(buf, sizeof buf, "%s%s%a", i ? " " : "", Q(d) == x[i] ? "" : "~", d);
     s += buf;
   }
   return s + ")";
@@ -225,8 +262,51 @@ struct Near {
   std::vector<std::size_t> idx;
   std::vector<V<D>> q;
 };
+// Points finer than doubles: their rounded doubles c̃ (|c̃ − c| ≤ 2^-53·|c̃| + 2^-1074) only bound the
+// distances. Per coordinate the true |Δ| lies in [|Δ̃|(1 − 2^-52) − a, |Δ̃|(1 + 2^-52) + a],
+// a = (2^-53·(|ũ_i| + |ṽ_i|) + 2^-1073)(1 + 2^-50); summing the squares in doubles costs a relative
+// 2^-50 at most (D ≤ 4), covered by the factors 1 ∓ 2^-48 and 2^-1000 for underflow. So
+// lo_u ≤ |uv|² ≤ hi_u, NN² ≤ H = min hi, and only u with lo_u ≤ max(1, f)·H need the exact scan.
 template <std::size_t D>
-Near<D> near(const std::vector<std::array<double, D>>& M, std::size_t v, const Q& f) {
+Near<D> near_fine(const Points<D>& P, std::size_t v, const Q& f) {
+  Near<D> out;
+  const auto& M = P.d;
+  std::vector<double> lo(M.size());
+  double H = std::numeric_limits<double>::infinity();
+  for (std::size_t u = 0; u < M.size(); ++u) {
+    if (u == v) continue;
+    double l = 0, h = 0;
+    for (std::size_t i = 0; i < D; ++i) {
+      const double a = (0x1p-53 * (std::fabs(M[u][i]) + std::fabs(M[v][i])) + 0x1p-1073) * (1 + 0x1p-50);
+      const double t = std::fabs(M[u][i] - M[v][i]);
+      const double li = std::max(0.0, t * (1 - 0x1p-52) - a), hi = t * (1 + 0x1p-52) + a;
+      l += li * li;
+      h += hi * hi;
+    }
+    lo[u] = l * (1 - 0x1p-48);
+    H = std::min(H, h * (1 + 0x1p-48) + 0x1p-1000);
+  }
+  const double bound = std::max(1.0, f.convert_to<double>() * (1 + 0x1p-30)) * H * (1 + 0x1p-30);
+  std::vector<std::pair<std::size_t, Q>> cand;
+  for (std::size_t u = 0; u < M.size(); ++u) {
+    if (u == v || !(lo[u] <= bound)) continue;
+    const V<D> x = rel<D>(P.q[u], P.q[v]);
+    const Q d = dotq<D>(x, x);
+    if (!out.nn2 || d < *out.nn2) out.nn2 = d;
+    cand.emplace_back(u, d);
+  }
+  for (const auto& [u, d] : cand)
+    if (d <= f * *out.nn2) {
+      out.idx.push_back(u);
+      out.q.push_back(rel<D>(P.q[u], P.q[v]));
+    }
+  return out;
+}
+// Double points: the filter above.
+template <std::size_t D>
+Near<D> near(const Points<D>& P, std::size_t v, const Q& f) {
+  if (!P.doubles) return near_fine<D>(P, v, f);
+  const auto& M = P.d;
   std::vector<double> dd(M.size());
   double dmin = std::numeric_limits<double>::infinity();
   for (std::size_t u = 0; u < M.size(); ++u) {
@@ -243,7 +323,7 @@ Near<D> near(const std::vector<std::array<double, D>>& M, std::size_t v, const Q
   std::vector<std::pair<std::size_t, Q>> cand;
   for (std::size_t u = 0; u < M.size(); ++u) {
     if (u == v || !(dd[u] <= std::max(t1, tf))) continue;
-    const V<D> x = rel<D>(M[u], M[v]);
+    const V<D> x = rel<D>(P.q[u], P.q[v]);
     const Q d = dotq<D>(x, x);
     if (dd[u] <= t1 && (!out.nn2 || d < *out.nn2)) out.nn2 = d;
     cand.emplace_back(u, d);
@@ -259,7 +339,6 @@ Near<D> near(const std::vector<std::array<double, D>>& M, std::size_t v, const Q
   return out;
 }
 
-}  // namespace
 
 // Vor(v) ∩ [0,1]^D ⊆ B(v, R), R = ρ·NN: only vertices u with |uv| ≤ 2R can cut B(v, R), and the
 // cell C' of those constraints is inside B(v, R) iff the true cell is (if C' poked out, the segment
@@ -268,10 +347,11 @@ Near<D> near(const std::vector<std::array<double, D>>& M, std::size_t v, const Q
 // C', found by min_norm); every vertex of C' is an endpoint of C' ∩ ℓ for the line ℓ of some
 // D − 1 independent facets through it, and the farthest point of C' from v is a vertex.
 template <std::size_t D>
-bool is_well_spaced(const std::vector<std::array<double, D>>& M, double rho, std::string* why) {
+bool well_spaced(const Points<D>& P, double rho, std::string* why) {
+  const auto& M = P.q;
   for (std::size_t v = 0; v < M.size(); ++v) {
     const Q rho2 = Q(rho) * Q(rho);
-    const Near<D> nb = near<D>(M, v, 4 * rho2);
+    const Near<D> nb = near<D>(P, v, 4 * rho2);
     if (!nb.nn2) continue;
     const auto& nn2 = nb.nn2;
     const Q R2 = rho2 * *nn2;
@@ -280,9 +360,9 @@ bool is_well_spaced(const std::vector<std::array<double, D>>& M, double rho, std
       Half<D> lo, hi;  // −x_i ≤ v_i and x_i ≤ 1 − v_i
       for (std::size_t j = 0; j < D; ++j) lo.a[j] = hi.a[j] = 0;
       lo.a[i] = -1;
-      lo.b = Q(M[v][i]);
+      lo.b = M[v][i];
       hi.a[i] = 1;
-      hi.b = 1 - Q(M[v][i]);
+      hi.b = 1 - M[v][i];
       lo.round();
       hi.round();
       hs.push_back(lo);
@@ -340,8 +420,7 @@ bool is_well_spaced(const std::vector<std::array<double, D>>& M, double rho, std
 }
 
 template <std::size_t D>
-bool is_size_conforming(const std::vector<std::array<double, D>>& N, const std::vector<std::array<double, D>>& M,
-                        double rho, std::string* why) {
+bool size_conforming(const std::vector<V<D>>& N, const std::vector<V<D>>& M, double rho, std::string* why) {
   const Q c = Q(2) * Q(rho) / (Q(rho) - 1), c2 = c * c;
   for (std::size_t v = 0; v < M.size(); ++v) {
     // lfs_N(v): radius of the smallest ball around v holding two input points
@@ -377,10 +456,10 @@ bool is_size_conforming(const std::vector<std::array<double, D>>& N, const std::
 // |wv| ≤ 2r matter: a point x with |xv| ≤ r has |xw| ≥ |wv| − r ≥ r ≥ |xv| for the others, so
 // dropping them changes neither "some face point within r" nor "none".
 template <std::size_t D>
-std::vector<std::size_t> clipped_voronoi_neighbors(const std::vector<std::array<double, D>>& M, std::size_t v, double beta) {
+std::vector<std::size_t> neighbors(const Points<D>& P, std::size_t v, double beta) {
   std::vector<std::size_t> out;
   const Q beta2 = Q(beta) * Q(beta);
-  const Near<D> nb = near<D>(M, v, 4 * beta2);  // |uv| ≤ 2r, r = β·NN
+  const Near<D> nb = near<D>(P, v, 4 * beta2);  // |uv| ≤ 2r, r = β·NN
   if (!nb.nn2) return out;
   const Q r2 = beta2 * *nb.nn2;
   const std::vector<std::size_t>& cand = nb.idx;
@@ -397,12 +476,91 @@ std::vector<std::size_t> clipped_voronoi_neighbors(const std::vector<std::array<
   return out;
 }
 
+}  // namespace
+
+template <std::size_t D>
+bool is_well_spaced(const std::vector<std::array<double, D>>& M, double rho, std::string* why) {
+  return well_spaced<D>(points<D>(M), rho, why);
+}
+template <std::size_t D>
+bool is_well_spaced(const std::vector<ExactPoint<D>>& M, double rho, std::string* why) {
+  return well_spaced<D>(points<D>(M), rho, why);
+}
+template <std::size_t D>
+bool is_size_conforming(const std::vector<std::array<double, D>>& N, const std::vector<std::array<double, D>>& M,
+                        double rho, std::string* why) {
+  return size_conforming<D>(points<D>(N).q, points<D>(M).q, rho, why);
+}
+template <std::size_t D>
+bool is_size_conforming(const std::vector<std::array<double, D>>& N, const std::vector<ExactPoint<D>>& M, double rho,
+                        std::string* why) {
+  return size_conforming<D>(points<D>(N).q, M, rho, why);
+}
+template <std::size_t D>
+std::vector<std::size_t> clipped_voronoi_neighbors(const std::vector<std::array<double, D>>& M, std::size_t v, double beta) {
+  return neighbors<D>(points<D>(M), v, beta);
+}
+template <std::size_t D>
+std::vector<std::size_t> clipped_voronoi_neighbors(const std::vector<ExactPoint<D>>& M, std::size_t v, double beta) {
+  return neighbors<D>(points<D>(M), v, beta);
+}
+
+// [+-]0x<hex>[.<hex>]p[+-]<dec>, exactly: the hex digits as an integer m with f fraction digits,
+// value m·2^(e − 4f).
+Rational read_hex_float(const std::string& s) {
+  auto bad = [&] { return std::invalid_argument("not a hex float: \"" + s + "\""); };
+  std::size_t i = 0;
+  bool neg = false;
+  if (i < s.size() && (s[i] == '+' || s[i] == '-')) neg = s[i++] == '-';
+  if (s.compare(i, 2, "0x") != 0 && s.compare(i, 2, "0X") != 0) throw bad();
+  i += 2;
+  boost::multiprecision::mpz_int m = 0;
+  long frac = 0, digits = 0;
+  bool point = false;
+  for (; i < s.size() && s[i] != 'p' && s[i] != 'P'; ++i) {
+    const char c = s[i];
+    int h;
+    if (c >= '0' && c <= '9') h = c - '0';
+    else if (c >= 'a' && c <= 'f') h = c - 'a' + 10;
+    else if (c >= 'A' && c <= 'F') h = c - 'A' + 10;
+    else if (c == '.' && !point) { point = true; continue; }
+    else throw bad();
+    m = m * 16 + h;
+    ++digits;
+    if (point) ++frac;
+  }
+  if (digits == 0 || i + 1 >= s.size()) throw bad();
+  ++i;  // 'p'
+  bool eneg = false;
+  if (s[i] == '+' || s[i] == '-') eneg = s[i++] == '-';
+  if (i >= s.size() || s.size() - i > 9) throw bad();
+  long e = 0;
+  for (; i < s.size(); ++i) {
+    if (s[i] < '0' || s[i] > '9') throw bad();
+    e = e * 10 + (s[i] - '0');
+  }
+  e = (eneg ? -e : e) - 4 * frac;
+  Rational x(m);
+  if (e >= 0) x *= Rational(boost::multiprecision::mpz_int(1) << static_cast<unsigned>(e));
+  else x /= Rational(boost::multiprecision::mpz_int(1) << static_cast<unsigned>(-e));
+  return neg ? Rational(-x) : x;
+}
+
 #define KMR_WSJUDGE_INSTANTIATE(DIM)                                                                              \
   template bool is_well_spaced<DIM>(const std::vector<std::array<double, DIM>>&, double, std::string*);          \
   template bool is_size_conforming<DIM>(const std::vector<std::array<double, DIM>>&,                             \
                                         const std::vector<std::array<double, DIM>>&, double, std::string*);     \
   template std::vector<std::size_t> clipped_voronoi_neighbors<DIM>(const std::vector<std::array<double, DIM>>&, \
                                                                    std::size_t, double);
+#define KMR_WSJUDGE_INSTANTIATE_EXACT(DIM)                                                                        \
+  template bool is_well_spaced<DIM>(const std::vector<ExactPoint<DIM>>&, double, std::string*);                  \
+  template bool is_size_conforming<DIM>(const std::vector<std::array<double, DIM>>&,                             \
+                                        const std::vector<ExactPoint<DIM>>&, double, std::string*);             \
+  template std::vector<std::size_t> clipped_voronoi_neighbors<DIM>(const std::vector<ExactPoint<DIM>>&,         \
+                                                                   std::size_t, double);
+KMR_WSJUDGE_INSTANTIATE_EXACT(2)
+KMR_WSJUDGE_INSTANTIATE_EXACT(3)
+KMR_WSJUDGE_INSTANTIATE_EXACT(4)
 KMR_WSJUDGE_INSTANTIATE(2)
 KMR_WSJUDGE_INSTANTIATE(3)
 KMR_WSJUDGE_INSTANTIATE(4)

@@ -9,13 +9,26 @@
 //  * is_size_conforming(N, M, ρ): exactly "NN_M(v) ≥ lfs_N(v)/c, c = 2ρ/(ρ−1)" (Lemma 3.3.3).
 //  * clipped_voronoi_neighbors(M, v, β): exactly the u with a point x on the face of Vor_M(M[v])
 //    (unclipped by the domain) on the bisector of M[v], M[u] and |x − M[v]| ≤ β·NN_M(M[v]).
-// Points are std::array<double, D> (the library's Point<D>); every double is an exact dyadic.
+//  * Each judge reads points either as doubles (std::array<double, D>, the library's Point<D>; every
+//    double is an exact dyadic) or as exact rationals (ExactPoint<D>, within the range of doubles: outputs with vertices finer
+//    than a double, issue 11 §1, read from kmr's hex-float text by read_hex_float). Both give the
+//    same verdict on the same values; the double filters are used only where they are sound.
+//  * read_hex_float(s) is exactly the value of a C99 hex float ("%a" text, any number of digits).
 #include <array>
+#include <boost/multiprecision/gmp.hpp>
 #include <cstddef>
 #include <string>
 #include <vector>
 
 namespace kmr::wsjudge {
+
+using Rational = boost::multiprecision::mpq_rational;
+template <std::size_t D>
+using ExactPoint = std::array<Rational, D>;
+
+// The exact value of a hex float [+-]0x<hex>[.<hex>]p[+-]<dec> (kmr's output of a coordinate);
+// throws std::invalid_argument naming the text otherwise.
+Rational read_hex_float(const std::string& s);
 
 template <std::size_t D>
 bool is_well_spaced(const std::vector<std::array<double, D>>& M, double rho, std::string* why = nullptr);
@@ -25,5 +38,14 @@ bool is_size_conforming(const std::vector<std::array<double, D>>& N, const std::
 // Indices into M, sorted.
 template <std::size_t D>
 std::vector<std::size_t> clipped_voronoi_neighbors(const std::vector<std::array<double, D>>& M, std::size_t v, double beta);
+
+// The same judges on exact points.
+template <std::size_t D>
+bool is_well_spaced(const std::vector<ExactPoint<D>>& M, double rho, std::string* why = nullptr);
+template <std::size_t D>
+bool is_size_conforming(const std::vector<std::array<double, D>>& N, const std::vector<ExactPoint<D>>& M, double rho,
+                        std::string* why = nullptr);
+template <std::size_t D>
+std::vector<std::size_t> clipped_voronoi_neighbors(const std::vector<ExactPoint<D>>& M, std::size_t v, double beta);
 
 }  // namespace kmr::wsjudge

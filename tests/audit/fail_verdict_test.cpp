@@ -128,7 +128,7 @@ TEST(FailVerdict, WellSpacedJudgeCatchesANearDuplicateVertex) {
   });
   EXPECT_FALSE(t.result.verdict.pass);
   EXPECT_EQ(t.calls, 5);  // the five 2D inputs; only the first is broken
-  EXPECT_EQ(t.result.verdict.summary.rfind("5/6 outputs", 0), 0u) << t.result.verdict.summary;
+  EXPECT_EQ(t.result.verdict.summary.rfind("6/7 outputs", 0), 0u) << t.result.verdict.summary;
 }
 
 // A check that throws is a FAIL whose summary carries the message (run_checks), also when the check

@@ -8,6 +8,7 @@
 #include <string>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <random>
 #include <cmath>
 
@@ -23,9 +24,10 @@ using kmr::wsjudge::is_size_conforming;
 
 namespace {
 
-// The output as doubles, for the brute-force judges of src/wsjudge (which read doubles): a vertex
-// finer than a double (near-duplicate inputs) would be judged rounded, so none may occur here (the
-// tests with such vertices are judged by the CGAL oracle on the exact output).
+// The output as doubles, for the brute-force judges of src/wsjudge: a vertex finer than a double
+// (near-duplicate inputs) would be judged rounded, so none may occur here (outputs with such
+// vertices are judged on their exact text: T3_3_4_OneUlpPairOutputJudgedExactly, and by the CGAL
+// oracle).
 template <std::size_t D>
 std::vector<Point<D>> coords(const std::vector<Vertex<D>>& vs) {
   std::vector<Point<D>> out;
@@ -672,4 +674,111 @@ TEST(WsJudgeBruteForce, RejectsOutputWithoutItsSteinerVertices) {
   auto M2 = M;
   M2.push_back({M[0][0] + (M[0][0] < 0.5 ? 0x1p-20 : -0x1p-20), M[0][1]});
   EXPECT_FALSE(is_size_conforming<2>(input, M2, 1.5));
+}
+
+// The judges on exact points (outputs with vertices finer than a double, issue 11 §1).
+namespace {
+using kmr::wsjudge::ExactPoint;
+using kmr::wsjudge::Rational;
+using kmr::wsjudge::read_hex_float;
+Rational pow2(int e) {
+  Rational x = 1;
+  for (int i = 0; i < std::abs(e); ++i) x = e > 0 ? Rational(x * 2) : Rational(x / 2);
+  return x;
+}
+// The library's exact text of every vertex, read back by the judge's own reader.
+template <std::size_t D>
+std::vector<ExactPoint<D>> exact_points(const std::vector<Vertex<D>>& vs) {
+  std::vector<ExactPoint<D>> out;
+  for (const auto& v : vs) {
+    ExactPoint<D> x;
+    for (std::size_t i = 0; i < D; ++i) x[i] = read_hex_float(v.exact.text(i));
+    out.push_back(x);
+  }
+  return out;
+}
+}  // namespace
+
+// Hand-derived values, the text of every "%a" double (as strtod reads it), and malformed texts.
+TEST(WsJudgeBruteForce, ReadHexFloatIsExact) {
+  EXPECT_EQ(read_hex_float("0x1.8p-3"), Rational(3, 16));
+  EXPECT_EQ(read_hex_float("-0x1.0000000000001p+0"), -(1 + pow2(-52)));
+  EXPECT_EQ(read_hex_float("0x1.00000000000000000001p-1"), Rational(1, 2) + pow2(-81));  // 20 digits
+  EXPECT_EQ(read_hex_float("0x0p+0"), 0);
+  EXPECT_EQ(read_hex_float("0xA.8p1"), 21);
+  std::mt19937_64 rng(11);
+  char buf[64];
+  for (int i = 0; i < 2000; ++i) {
+    double d;
+    const std::uint64_t bits = rng();
+    std::memcpy(&d, &bits, sizeof d);
+    if (!std::isfinite(d)) continue;
+    std::snprintf(buf, sizeof buf, "%a", d);
+    EXPECT_EQ(read_hex_float(buf), Rational(d)) << buf;
+  }
+  for (const char* bad : {"", "0x", "1.5", "0x1.8", "0x1.8q3", "0x1p", "0x1.8p-3x", "0x1..8p0", "0xp0", "0x1p-"})
+    EXPECT_THROW(read_hex_float(bad), std::invalid_argument) << bad;
+}
+
+// v = (½, ½), u = v + 2^-60·e_1 (not a double: rounded, u = v): Vor(v) ∩ [0,1]² = {x_1 ≤ ½ + 2^-61},
+// farthest from v at the corners x_1 = 0 (|xv|² = ½), NN² = 2^-120: well-spaced iff ρ² ≥ 2^119
+// (u's corners are nearer). And the neighbour case of judge_neighbour_case scaled by 2^-56.
+TEST(WsJudgeBruteForce, ExactPointsFinerThanDoublesHandDerived) {
+  const Rational h = Rational(1, 2);
+  const std::vector<ExactPoint<2>> pair{{h, h}, {h + pow2(-60), h}};
+  EXPECT_FALSE(is_well_spaced<2>(pair, 0x1p59));
+  EXPECT_TRUE(is_well_spaced<2>(pair, 0x1p60));
+  EXPECT_FALSE(is_well_spaced<2>(std::vector<Point<2>>{{0.5, 0.5}, {0.5 + 0x1p-60, 0.5}}, 0x1p60));  // rounded: a duplicate
+  const Rational s = pow2(-56);
+  for (double hh : {0.375, 0.375 + 0x1p-20, 0.25, 0.4375}) {
+    const std::vector<ExactPoint<2>> M{{h, h}, {h + s / 16, h}, {h, h + Rational(hh) * s}};
+    std::vector<std::size_t> want{1};
+    if (hh <= 0.375) want.push_back(2);
+    EXPECT_EQ(kmr::wsjudge::clipped_voronoi_neighbors<2>(M, 0, 3.0), want) << "h = " << hh;
+  }
+  // u1 = v − 2^-55·e_1 rounds to v itself (a tie, to even), u2 = v + 2^-53·e_1 is a double: NN = 2^-55
+  // and Vor(v) is the strip ½ − 2^-56 ≤ x_1 ≤ ½ + 2^-54, so u2's face is 2^-54 from v: a β-clipped
+  // neighbour at β = 8 (r = 2^-52), not at β = 1 (r = 2^-55); u1's face (2^-56) at both. A filter
+  // reading the rounded points would see NN = 0 and drop u2.
+  const std::vector<ExactPoint<2>> strip{{h, h}, {h - pow2(-55), h}, {h + pow2(-53), h}};
+  EXPECT_EQ(kmr::wsjudge::clipped_voronoi_neighbors<2>(strip, 0, 8.0), (std::vector<std::size_t>{1, 2}));
+  EXPECT_EQ(kmr::wsjudge::clipped_voronoi_neighbors<2>(strip, 0, 1.0), (std::vector<std::size_t>{1}));
+  // size conformity: input {v, v + 2^-60 e_1} exactly, lfs(v) = 2^-60; M adds w at 2^-70 from v:
+  // NN_M(v) = 2^-70 < lfs/c (c = 6 at ρ = 1.5). Inputs are doubles in the API: scale the pair to
+  // [0, 2^-60] (doubles), fine points in M.
+  const std::vector<Point<2>> N{{0, 0}, {0x1p-60, 0}};
+  std::vector<ExactPoint<2>> M{{0, 0}, {pow2(-60), 0}};
+  EXPECT_TRUE(is_size_conforming<2>(N, M, 1.5));
+  M.push_back({pow2(-70) + pow2(-130), 0});
+  EXPECT_FALSE(is_size_conforming<2>(N, M, 1.5));
+}
+
+// The 1-ulp pair's output (vertices finer than doubles), read from the library's exact text: the
+// exact judges accept it (ρ-well-spaced, size-conforming; the CGAL oracle agrees:
+// WsJudge.T3_3_4_NearDuplicatePairsFinerThanDoubles2D), and reject it without its Steiner vertices
+// and with its fine vertices rounded to doubles.
+TEST(WsJudgeBruteForce, T3_3_4_OneUlpPairOutputJudgedExactly) {
+  RecordProperty("claim", "T3.3.4");
+  std::vector<Point<2>> pair = {{0.5, 0.5}, {std::nextafter(0.5, 1.0), 0.5}};
+  Params p;  // ρ = 4 keeps |M| small for the exact judge (the default ρ: |M| = 905, ~10 s)
+  p.rho = 4;
+  p.beta = 8;
+  WellSpacedSet<2> ws(pair, p);
+  const auto vs = ws.vertices();
+  const auto M = exact_points<2>(vs);
+  std::vector<ExactPoint<2>> inputs_only;
+  std::vector<Point<2>> rounded;
+  std::size_t fine = 0;
+  for (std::size_t i = 0; i < vs.size(); ++i) {
+    if (!vs[i].is_steiner) inputs_only.push_back(M[i]);
+    rounded.push_back(vs[i].x);
+    fine += !vs[i].exact.is_double();
+  }
+  ASSERT_GT(fine, 0u);
+  std::string why;
+  EXPECT_TRUE(is_well_spaced<2>(M, ws.params().rho, &why)) << why;
+  EXPECT_TRUE(is_size_conforming<2>(pair, M, ws.params().rho, &why)) << why;
+  EXPECT_FALSE(is_well_spaced<2>(inputs_only, ws.params().rho));
+  EXPECT_FALSE(is_well_spaced<2>(rounded, ws.params().rho) && is_size_conforming<2>(pair, rounded, ws.params().rho));
+  std::printf("  |M| = %zu, %zu finer than doubles\n", M.size(), fine);
 }
