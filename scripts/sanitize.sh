@@ -21,6 +21,11 @@ cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" \
   -DCMAKE_CXX_FLAGS="$san" -DCMAKE_EXE_LINKER_FLAGS="$san" -DCMAKE_SHARED_LINKER_FLAGS="$san" \
   -DKMR_BENCH=OFF -DKMR_FUZZ_SEEDED=OFF -DKMR_TEST_TIMEOUT_SCALE=4 >/dev/null
 cmake --build "$dir" -j 2
-export ASAN_OPTIONS=${ASAN_OPTIONS:-halt_on_error=1:abort_on_error=1:detect_leaks=1}
+# malloc_context_size=2: ASan records 2 frames (not 30) of the stack of every malloc and free. What
+# it detects is unchanged; only the allocation/free stacks printed with a finding are shorter (rerun
+# the failing test with ASAN_OPTIONS=malloc_context_size=30 for full ones). It makes GMP-heavy tests
+# 1.7-3.4x faster (measured: `kmr kmesh` on 8 points 49 -> 15 s user; KmeshKdsStateProp 575 -> 216 s
+# and the 4D degenerate families 524 -> 308 s, interleaved on a loaded machine).
+export ASAN_OPTIONS=${ASAN_OPTIONS:-halt_on_error=1:abort_on_error=1:detect_leaks=1:malloc_context_size=2}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
 ctest --test-dir "$dir" --output-on-failure -j 2 --timeout 1800 -E '^audit\.full$' "$@"
