@@ -17,6 +17,7 @@
 #include "audit/audit.hpp"
 #include "hull/hull.hpp"
 #include "hull/kinetic_hull.hpp"
+#include "kinetic/separation_study.hpp"
 #include "poly/sturm.hpp"
 #include "sacprograms/session.hpp"
 
@@ -187,6 +188,32 @@ TEST(AuditFailPaths, KineticHullJudgesRefuseAWrongHullTraceAndCertificateSet) {
   auto clean = run_checks(o);
   ASSERT_EQ(clean.size(), 1u);
   EXPECT_TRUE(clean.front().verdict.pass) << clean.front().verdict.summary;
+}
+
+// Lattice batching against exact separation: each of the three judgements, wrong on purpose in the
+// classic simulator's run — its order (generic motions), its root-solver work set to nothing, no tie
+// established where the simultaneous motions need one; then only its crossing count. Each reason is
+// named with its input, in order.
+TEST(AuditFailPaths, BatchingJudgeNamesEveryDisagreement) {
+  const std::string claim = "A2.1-batching-avoids-separation", name = claim + " classic";
+  auto r = run_with(claim, [&](const std::string& n, std::any& value, int call) {
+    if (n != name) return;
+    auto& run = std::any_cast<kmr::kinetic::StudyRun&>(value);
+    if (call == 0) {
+      std::swap(run.order.front(), run.order.back());
+      run.sturm_queries = run.bisection_steps = run.machine_steps = 0;
+    } else {
+      run.ties = 0;
+    }
+  });
+  EXPECT_FALSE(r.verdict.pass);
+  EXPECT_EQ(r.verdict.summary,
+            "simulators disagree (generic); classic needed no more root work (generic); no tie established (simultaneous); ");
+  auto crossings = run_with(claim, [&](const std::string& n, std::any& value, int call) {
+    if (n == name && call == 1) std::any_cast<kmr::kinetic::StudyRun&>(value).crossings += 1;
+  });
+  EXPECT_FALSE(crossings.verdict.pass);
+  EXPECT_EQ(crossings.verdict.summary, "simulators disagree (simultaneous); ");
 }
 
 }  // namespace
