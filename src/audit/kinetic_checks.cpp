@@ -104,7 +104,7 @@ Verdict batching_avoids_separation(const Options& options) {
     auto x = kinetic::section_2_4_sort_motions(n, simultaneous, options.seed);
     auto machine = kinetic::run_lattice_sort(x, bits, until, true);
     auto exact = kinetic::run_lattice_sort(x, bits, until, false);
-    auto classic = kinetic::run_classic_sort(x, bits, until);
+    auto classic = measured(options, "A2.1-batching-avoids-separation classic", kinetic::run_classic_sort(x, bits, until));
     std::string tag = simultaneous ? " (simultaneous)" : " (generic)";
     if (machine.order != classic.order || exact.order != classic.order || machine.crossings != classic.crossings)
       v.pass = false, why << "simulators disagree" << tag << "; ";

@@ -75,7 +75,7 @@ Verdict lattice_isolation(const Options& options, bool failures_only) {
     for (const auto& c : pl.p.coefficients()) max_bits = std::max<long long>(max_bits, exact::bit_length(c));
     std::ostringstream why;
     if (!failures_only) {
-      auto got = solver.isolate(lo, hi);
+      auto got = measured(options, "A2.1-lattice-isolation intervals", solver.isolate(lo, hi));
       std::vector<poly::LatticeInterval> want;
       for (auto& [k, c] : pl.intervals) want.push_back({k, c.first, c.second % 2 == 1});
       if (got != want || solver.distinct_real_roots() != pl.distinct) why << "isolation differs from the planted roots";
@@ -87,7 +87,8 @@ Verdict lattice_isolation(const Options& options, bool failures_only) {
         for (auto& [k, c] : pl.intervals)
           if (k >= k0 && c.second % 2 == 1) { want = k; break; }
         ++failures_checked;
-        if (solver.next_failure_after(from, hi) != want) why << "next_failure_after(" << from.to_decimal() << ") wrong";
+        if (measured(options, "A2.1-next-failure interval", solver.next_failure_after(from, hi)) != want)
+          why << "next_failure_after(" << from.to_decimal() << ") wrong";
       }
     }
     queries += solver.sturm_queries;

@@ -152,7 +152,7 @@ const Certificate& MotionSimulator::certificate(CertificateId id) const {
   std::optional<Integer> failure;
   if (r.scheduled) failure = Integer(r.failure);
   // A pending record is a popped linear one: its only root lay in the interval just processed, so
-  // this finds no later failure (kept general rather than assumed; not reached by a test).
+  // this finds no later failure (kept general; the k-found side is never taken; viewed in linear_brute_force_test).
   if (r.pending)
     if (auto k = machine_failure_uncounted(r)) failure = Integer(*k);
   poly::LatticeRootSolver solver(p, bits_);
@@ -187,7 +187,7 @@ void MotionSimulator::flush_pending() {
   for (CertificateId id : pending_) {
     if (slot_of_id_[id] == kNoRecord) continue;  // removed meanwhile
     Record& r = records_[slot_of_id_[id]];
-    if (!r.pending) continue;
+    if (!r.pending) continue;  // defensive, never taken: ids are pending once per batch, removal frees the slot
     r.pending = false;
     schedule(r, id);
   }
