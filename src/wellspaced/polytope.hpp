@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <boost/multiprecision/gmp.hpp>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <type_traits>
@@ -121,6 +122,62 @@ int filtered_sign(const IntervalNT& approx, Exact&& exact) {
   else return exact().sign();
 }
 
+// Static double filter (issue 11 §4; Shewchuk's fast/exact split) in front of the interval
+// enclosures: the value is evaluated once in plain doubles at a point of the enclosures (their
+// lower ends) with an a-priori bound E on its distance from the value at EVERY point of them;
+// the sign is decided when |value| > E, else 0 ("undecided": the caller falls to the intervals,
+// then to exact arithmetic). Bound (u = 2^-53, Higham §3.1): for a ∈ [a', a'+wa], x ∈ [x', x'+wx],
+// |a·x − a'·x'| ≤ wa·(|x'| + wx) + |a'|·wx; a dot product of n terms has rounding error
+// ≤ γ_n·Σ|terms| < (n+1)·u·Σ|terms|; the bound's own roundings (< 4(D+2)u relative) and underflow
+// (each product ≤ 2^-1075 off) are covered by the factor 1 + 2^-40 and the absolute 2^-1000.
+namespace double_filter {
+inline constexpr double kSafety = 1 + 0x1p-40;
+inline constexpr double kTinyAbs = 0x1p-1000;
+// 1 / −1 when every point of the enclosures has Σ a_i·x_i − b of that sign; 0 undecided.
+template <std::size_t D>
+inline int dot_minus_sign(const IPoint<D>& a, const IPoint<D>& x, const IntervalNT& b) {
+  double s = 0, mag = 0, wide = 0;
+  for (std::size_t i = 0; i < D; ++i) {
+    const double al = a[i].lo(), xl = x[i].lo(), wa = a[i].hi() - al, wx = x[i].hi() - xl;
+    const double p = al * xl;
+    s += p;
+    mag += std::fabs(p);
+    wide += wa * (std::fabs(xl) + wx) + std::fabs(al) * wx;
+  }
+  const double bl = b.lo();
+  s -= bl;
+  mag += std::fabs(bl);
+  wide += b.hi() - bl;
+  const double e = (wide + mag * (double(D + 2) * 0x1p-52)) * kSafety + kTinyAbs;
+  if (s > e) return 1;
+  if (s < -e) return -1;
+  return 0;  // also when e or s is not finite (comparisons with NaN are false)
+}
+// 1 / −1 when every point of the enclosures has |x − c|² − r2 of that sign; 0 undecided.
+template <std::size_t D>
+inline int dist2_minus_sign(const IPoint<D>& x, const IPoint<D>& c, const IntervalNT& r2) {
+  double s = 0, mag = 0, wide = 0;
+  for (std::size_t i = 0; i < D; ++i) {
+    // d = fl(x' − c'), within δ = wx + wc + 2u|d| of every x_i − c_i; |t² − d²| ≤ δ(2|d| + δ)
+    const double xl = x[i].lo(), cl = c[i].lo();
+    const double d = xl - cl, ad = std::fabs(d);
+    const double delta = (x[i].hi() - xl) + (c[i].hi() - cl) + ad * 0x1p-52;
+    const double q = d * d;
+    s += q;
+    mag += q;
+    wide += delta * (2 * ad + delta);
+  }
+  const double rl = r2.lo();
+  s -= rl;
+  mag += std::fabs(rl);
+  wide += r2.hi() - rl;
+  const double e = (wide + mag * (double(D + 2) * 0x1p-52)) * kSafety + kTinyAbs;
+  if (s > e) return 1;
+  if (s < -e) return -1;
+  return 0;
+}
+}  // namespace double_filter
+
 template <std::size_t D, class NT = Q>
 struct Halfspace {  // a·x ≤ b
   std::array<NT, D> a;
@@ -184,11 +241,15 @@ struct Polytope {
   // Exact sign of a·x − b for constraint k at a point with enclosure xi.
   int sign_at(std::size_t k, const P& x, const IPoint<D>& xi) const {
     const Constraint& c = h[k];
+    if constexpr (is_interval_v<NT>)  // the fast tier only: exact_only runs judge the filter
+      if (int s = double_filter::dot_minus_sign<D>(c.ai, xi, c.bi)) return s;
     return filtered_sign<NT>(dot(c.ai, xi) - c.bi, [&] { return slack(c.h, x); });
   }
   // Exact sign of |x − c|² − r2.
   static int compare_dist2(const P& x, const IPoint<D>& xi, const P& c, const IPoint<D>& ci, const NT& r2,
                            const IntervalNT& r2i) {
+    if constexpr (is_interval_v<NT>)
+      if (int s = double_filter::dist2_minus_sign<D>(xi, ci, r2i)) return s;
     return filtered_sign<NT>(dist2(xi, ci) - r2i, [&] { return dist2(x, c) - r2; });
   }
 
