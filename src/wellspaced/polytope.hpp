@@ -193,13 +193,49 @@ Halfspace<D, NT> bisector(const std::array<NT, D>& v, const std::array<NT, D>& u
   return h;
 }
 
+// The constraints tight at a vertex, sorted: inline up to kInline (D of them at a simple vertex;
+// more only at degenerate ones, cocircular/cospherical), on the heap beyond (issue 11 §4: no heap
+// traffic per vertex in the common case).
+class TightSet {
+ public:
+  static constexpr std::uint32_t kInline = 6;
+  const int* begin() const { return n_ <= kInline ? in_.data() : big_.data(); }
+  const int* end() const { return begin() + n_; }
+  int* begin() { return n_ <= kInline ? in_.data() : big_.data(); }
+  int* end() { return begin() + n_; }
+  std::size_t size() const { return n_; }
+  void clear() {
+    n_ = 0;
+    big_.clear();
+  }
+  void push_back(int x) {
+    if (n_ < kInline) {
+      in_[n_++] = x;
+      return;
+    }
+    if (n_ == kInline) big_.assign(in_.begin(), in_.end());
+    big_.push_back(x);
+    ++n_;
+  }
+
+ private:
+  std::array<int, kInline> in_{};
+  std::uint32_t n_ = 0;
+  std::vector<int> big_;  // all elements when n_ > kInline
+};
+
 template <std::size_t D, class NT = Q>
 struct Polytope {
   using P = std::array<NT, D>;
   struct Vert {
     P x;
-    std::vector<int> tight;  // sorted constraint indices
-    IPoint<D> xi{};          // enclosure of x (the filter)
+    TightSet tight;  // sorted constraint indices
+    IPoint<D> xi{};  // enclosure of x (the filter)
+    IntervalNT n2i;  // enclosure of |x|² (the squared distance from the site at the origin)
+    void set_enclosures() {
+      xi = enclose<NT, D>(x);
+      n2i = dist2(xi, IPoint<D>{});
+    }
   };
   struct Constraint {
     Halfspace<D, NT> h;
@@ -231,7 +267,7 @@ struct Polytope {
         c.tight.push_back(static_cast<int>(2 * i + (hiside ? 0 : 1)));
       }
       std::sort(c.tight.begin(), c.tight.end());
-      c.xi = enclose<NT, D>(c.x);
+      c.set_enclosures();
       B.v.push_back(std::move(c));
     }
     return B;
@@ -256,7 +292,8 @@ struct Polytope {
   // Adds constraint hs (index = h.size() before the call) and clips. Returns its index.
   int clip(const Halfspace<D, NT>& hs) {
     int j = add(hs);
-    std::vector<int> sg(v.size());
+    std::vector<int>& sg = scratch_sign_;
+    sg.resize(v.size());
     bool any_out = false;
     for (std::size_t k = 0; k < v.size(); ++k) {
       sg[k] = sign_at(static_cast<std::size_t>(j), v[k].x, v[k].xi);
@@ -268,15 +305,24 @@ struct Polytope {
       return j;
     }
     ++version;
-    std::vector<Vert> out;
-    std::vector<int> common;
+    std::vector<Vert>& out = scratch_verts_;  // reused: its vertices' storage stays allocated
+    out.clear();
+    TightSet common;
     for (std::size_t p = 0; p < v.size(); ++p) {
       if (sg[p] >= 0) continue;
       for (std::size_t q = 0; q < v.size(); ++q) {
         if (sg[q] <= 0) continue;
         common.clear();
-        std::set_intersection(v[p].tight.begin(), v[p].tight.end(), v[q].tight.begin(), v[q].tight.end(),
-                              std::back_inserter(common));
+        for (const int *a = v[p].tight.begin(), *ae = v[p].tight.end(), *b = v[q].tight.begin(), *be = v[q].tight.end();
+             a != ae && b != be;) {
+          if (*a < *b) ++a;
+          else if (*b < *a) ++b;
+          else {
+            common.push_back(*a);
+            ++a;
+            ++b;
+          }
+        }
         if (common.size() + 1 < D) continue;
         bool adjacent = true;
         for (std::size_t r = 0; r < v.size() && adjacent; ++r) {
@@ -284,14 +330,13 @@ struct Polytope {
           if (std::includes(v[r].tight.begin(), v[r].tight.end(), common.begin(), common.end())) adjacent = false;
         }
         if (!adjacent) continue;
-        Vert nv;
+        Vert& nv = out.emplace_back();
         NT sp = slack(hs, v[p].x), sq = slack(hs, v[q].x);
         NT lam = sp / (sp - sq);
         for (std::size_t i = 0; i < D; ++i) nv.x[i] = v[p].x[i] + (v[q].x[i] - v[p].x[i]) * lam;
-        nv.xi = enclose<NT, D>(nv.x);
+        nv.set_enclosures();
         nv.tight = common;
         nv.tight.push_back(j);
-        out.push_back(std::move(nv));
       }
     }
     for (std::size_t k = 0; k < v.size(); ++k) {
@@ -299,7 +344,7 @@ struct Polytope {
       if (sg[k] == 0) v[k].tight.push_back(j);
       out.push_back(std::move(v[k]));
     }
-    v = std::move(out);
+    std::swap(v, out);
     return j;
   }
 
@@ -313,8 +358,10 @@ struct Polytope {
   }
   // An upper bound on the max squared distance from c over the vertices (rigorous; for pruning).
   double max_dist2_upper(const IPoint<D>& ci) const {
+    bool origin = true;
+    for (std::size_t i = 0; i < D; ++i) origin = origin && ci[i].lo() == 0 && ci[i].hi() == 0;
     double m = 0;
-    for (const auto& x : v) m = std::max(m, dist2(x.xi, ci).hi());
+    for (const auto& x : v) m = std::max(m, origin ? x.n2i.hi() : dist2(x.xi, ci).hi());
     return m;
   }
   // Is some vertex farther than sqrt(r2) from c?
@@ -407,6 +454,8 @@ struct Polytope {
   }
 
  private:
+  std::vector<int> scratch_sign_;     // clip's signs, reused
+  std::vector<Vert> scratch_verts_;  // clip's output, swapped with v (keeps both allocations)
   int add(const Halfspace<D, NT>& hs) {
     Constraint c{hs, enclose<NT, D>(hs.a), exact::enclose(hs.b)};
     h.push_back(std::move(c));

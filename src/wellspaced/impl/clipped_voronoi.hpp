@@ -209,7 +209,7 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
           b.lo[i] = x.lo();
           b.hi[i] = x.hi();
         }
-        IntervalNT r = dist2(c.xi, vi);
+        const IntervalNT& r = c.n2i;  // = dist2(c.xi, vi): vi is the origin
         b.r_lo = r.lo();
         b.r_hi = r.hi();
         vb.push_back(b);
