@@ -189,7 +189,7 @@ template <std::size_t D, class NT>
 Halfspace<D, NT> bisector(const std::array<NT, D>& v, const std::array<NT, D>& u) {
   Halfspace<D, NT> h;
   for (std::size_t i = 0; i < D; ++i) h.a[i] = u[i] - v[i];
-  h.b = (dot(u, u) - dot(v, v)) / NT(2);
+  h.b = (dot(u, u) - dot(v, v)) * NT(0.5);  // halving: exact (a multiplication is cheaper)
   return h;
 }
 
