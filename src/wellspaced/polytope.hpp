@@ -224,6 +224,16 @@ class TightSet {
   std::vector<int> big_;  // all elements when n_ > kInline
 };
 
+// bisector(0, u): the site at the origin (cells relative to their site). The zero terms are left
+// out; the values, and in the interval tier the enclosures, are those of bisector(0, u).
+template <std::size_t D, class NT>
+Halfspace<D, NT> bisector_of_origin(const std::array<NT, D>& u) {
+  Halfspace<D, NT> h;
+  h.a = u;
+  h.b = dot(u, u) * NT(0.5);
+  return h;
+}
+
 template <std::size_t D, class NT = Q>
 struct Polytope {
   using P = std::array<NT, D>;

@@ -162,7 +162,7 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
         continue;
       }
       unsigned ver = C->version;
-      cidx.push_back(C->clip(bisector<D, NT>(vq, rel(cand[i].u))));
+      cidx.push_back(C->clip(bisector_of_origin<D, NT>(rel(cand[i].u))));
       if (C->version != ver) maxd = C->max_dist2_upper(vi);
     }
     limit = 4 * maxd;  // a point of a certificate ball B(c, |cv|) is within 2|cv| of v
