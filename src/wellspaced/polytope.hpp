@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <boost/multiprecision/gmp.hpp>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <type_traits>
@@ -121,6 +122,62 @@ int filtered_sign(const IntervalNT& approx, Exact&& exact) {
   else return exact().sign();
 }
 
+// Static double filter (issue 11 §4; Shewchuk's fast/exact split) in front of the interval
+// enclosures: the value is evaluated once in plain doubles at a point of the enclosures (their
+// lower ends) with an a-priori bound E on its distance from the value at EVERY point of them;
+// the sign is decided when |value| > E, else 0 ("undecided": the caller falls to the intervals,
+// then to exact arithmetic). Bound (u = 2^-53, Higham §3.1): for a ∈ [a', a'+wa], x ∈ [x', x'+wx],
+// |a·x − a'·x'| ≤ wa·(|x'| + wx) + |a'|·wx; a dot product of n terms has rounding error
+// ≤ γ_n·Σ|terms| < (n+1)·u·Σ|terms|; the bound's own roundings (< 4(D+2)u relative) and underflow
+// (each product ≤ 2^-1075 off) are covered by the factor 1 + 2^-40 and the absolute 2^-1000.
+namespace double_filter {
+inline constexpr double kSafety = 1 + 0x1p-40;
+inline constexpr double kTinyAbs = 0x1p-1000;
+// 1 / −1 when every point of the enclosures has Σ a_i·x_i − b of that sign; 0 undecided.
+template <std::size_t D>
+inline int dot_minus_sign(const IPoint<D>& a, const IPoint<D>& x, const IntervalNT& b) {
+  double s = 0, mag = 0, wide = 0;
+  for (std::size_t i = 0; i < D; ++i) {
+    const double al = a[i].lo(), xl = x[i].lo(), wa = a[i].hi() - al, wx = x[i].hi() - xl;
+    const double p = al * xl;
+    s += p;
+    mag += std::fabs(p);
+    wide += wa * (std::fabs(xl) + wx) + std::fabs(al) * wx;
+  }
+  const double bl = b.lo();
+  s -= bl;
+  mag += std::fabs(bl);
+  wide += b.hi() - bl;
+  const double e = (wide + mag * (double(D + 2) * 0x1p-52)) * kSafety + kTinyAbs;
+  if (s > e) return 1;
+  if (s < -e) return -1;
+  return 0;  // also when e or s is not finite (comparisons with NaN are false)
+}
+// 1 / −1 when every point of the enclosures has |x − c|² − r2 of that sign; 0 undecided.
+template <std::size_t D>
+inline int dist2_minus_sign(const IPoint<D>& x, const IPoint<D>& c, const IntervalNT& r2) {
+  double s = 0, mag = 0, wide = 0;
+  for (std::size_t i = 0; i < D; ++i) {
+    // d = fl(x' − c'), within δ = wx + wc + 2u|d| of every x_i − c_i; |t² − d²| ≤ δ(2|d| + δ)
+    const double xl = x[i].lo(), cl = c[i].lo();
+    const double d = xl - cl, ad = std::fabs(d);
+    const double delta = (x[i].hi() - xl) + (c[i].hi() - cl) + ad * 0x1p-52;
+    const double q = d * d;
+    s += q;
+    mag += q;
+    wide += delta * (2 * ad + delta);
+  }
+  const double rl = r2.lo();
+  s -= rl;
+  mag += std::fabs(rl);
+  wide += r2.hi() - rl;
+  const double e = (wide + mag * (double(D + 2) * 0x1p-52)) * kSafety + kTinyAbs;
+  if (s > e) return 1;
+  if (s < -e) return -1;
+  return 0;
+}
+}  // namespace double_filter
+
 template <std::size_t D, class NT = Q>
 struct Halfspace {  // a·x ≤ b
   std::array<NT, D> a;
@@ -132,7 +189,48 @@ template <std::size_t D, class NT>
 Halfspace<D, NT> bisector(const std::array<NT, D>& v, const std::array<NT, D>& u) {
   Halfspace<D, NT> h;
   for (std::size_t i = 0; i < D; ++i) h.a[i] = u[i] - v[i];
-  h.b = (dot(u, u) - dot(v, v)) / NT(2);
+  h.b = (dot(u, u) - dot(v, v)) * NT(0.5);  // halving: exact (a multiplication is cheaper)
+  return h;
+}
+
+// The constraints tight at a vertex, sorted: inline up to kInline (D of them at a simple vertex;
+// more only at degenerate ones, cocircular/cospherical), on the heap beyond (issue 11 §4: no heap
+// traffic per vertex in the common case).
+class TightSet {
+ public:
+  static constexpr std::uint32_t kInline = 6;
+  const int* begin() const { return n_ <= kInline ? in_.data() : big_.data(); }
+  const int* end() const { return begin() + n_; }
+  int* begin() { return n_ <= kInline ? in_.data() : big_.data(); }
+  int* end() { return begin() + n_; }
+  std::size_t size() const { return n_; }
+  void clear() {
+    n_ = 0;
+    big_.clear();
+  }
+  void push_back(int x) {
+    if (n_ < kInline) {
+      in_[n_++] = x;
+      return;
+    }
+    if (n_ == kInline) big_.assign(in_.begin(), in_.end());
+    big_.push_back(x);
+    ++n_;
+  }
+
+ private:
+  std::array<int, kInline> in_{};
+  std::uint32_t n_ = 0;
+  std::vector<int> big_;  // all elements when n_ > kInline
+};
+
+// bisector(0, u): the site at the origin (cells relative to their site). The zero terms are left
+// out; the values, and in the interval tier the enclosures, are those of bisector(0, u).
+template <std::size_t D, class NT>
+Halfspace<D, NT> bisector_of_origin(const std::array<NT, D>& u) {
+  Halfspace<D, NT> h;
+  h.a = u;
+  h.b = dot(u, u) * NT(0.5);
   return h;
 }
 
@@ -141,8 +239,13 @@ struct Polytope {
   using P = std::array<NT, D>;
   struct Vert {
     P x;
-    std::vector<int> tight;  // sorted constraint indices
-    IPoint<D> xi{};          // enclosure of x (the filter)
+    TightSet tight;  // sorted constraint indices
+    IPoint<D> xi{};  // enclosure of x (the filter)
+    IntervalNT n2i;  // enclosure of |x|² (the squared distance from the site at the origin)
+    void set_enclosures() {
+      xi = enclose<NT, D>(x);
+      n2i = dist2(xi, IPoint<D>{});
+    }
   };
   struct Constraint {
     Halfspace<D, NT> h;
@@ -174,7 +277,7 @@ struct Polytope {
         c.tight.push_back(static_cast<int>(2 * i + (hiside ? 0 : 1)));
       }
       std::sort(c.tight.begin(), c.tight.end());
-      c.xi = enclose<NT, D>(c.x);
+      c.set_enclosures();
       B.v.push_back(std::move(c));
     }
     return B;
@@ -184,18 +287,23 @@ struct Polytope {
   // Exact sign of a·x − b for constraint k at a point with enclosure xi.
   int sign_at(std::size_t k, const P& x, const IPoint<D>& xi) const {
     const Constraint& c = h[k];
+    if constexpr (is_interval_v<NT>)  // the fast tier only: exact_only runs judge the filter
+      if (int s = double_filter::dot_minus_sign<D>(c.ai, xi, c.bi)) return s;
     return filtered_sign<NT>(dot(c.ai, xi) - c.bi, [&] { return slack(c.h, x); });
   }
   // Exact sign of |x − c|² − r2.
   static int compare_dist2(const P& x, const IPoint<D>& xi, const P& c, const IPoint<D>& ci, const NT& r2,
                            const IntervalNT& r2i) {
+    if constexpr (is_interval_v<NT>)
+      if (int s = double_filter::dist2_minus_sign<D>(xi, ci, r2i)) return s;
     return filtered_sign<NT>(dist2(xi, ci) - r2i, [&] { return dist2(x, c) - r2; });
   }
 
   // Adds constraint hs (index = h.size() before the call) and clips. Returns its index.
   int clip(const Halfspace<D, NT>& hs) {
     int j = add(hs);
-    std::vector<int> sg(v.size());
+    std::vector<int>& sg = scratch_sign_;
+    sg.resize(v.size());
     bool any_out = false;
     for (std::size_t k = 0; k < v.size(); ++k) {
       sg[k] = sign_at(static_cast<std::size_t>(j), v[k].x, v[k].xi);
@@ -207,15 +315,24 @@ struct Polytope {
       return j;
     }
     ++version;
-    std::vector<Vert> out;
-    std::vector<int> common;
+    std::vector<Vert>& out = scratch_verts_;  // reused: its vertices' storage stays allocated
+    out.clear();
+    TightSet common;
     for (std::size_t p = 0; p < v.size(); ++p) {
       if (sg[p] >= 0) continue;
       for (std::size_t q = 0; q < v.size(); ++q) {
         if (sg[q] <= 0) continue;
         common.clear();
-        std::set_intersection(v[p].tight.begin(), v[p].tight.end(), v[q].tight.begin(), v[q].tight.end(),
-                              std::back_inserter(common));
+        for (const int *a = v[p].tight.begin(), *ae = v[p].tight.end(), *b = v[q].tight.begin(), *be = v[q].tight.end();
+             a != ae && b != be;) {
+          if (*a < *b) ++a;
+          else if (*b < *a) ++b;
+          else {
+            common.push_back(*a);
+            ++a;
+            ++b;
+          }
+        }
         if (common.size() + 1 < D) continue;
         bool adjacent = true;
         for (std::size_t r = 0; r < v.size() && adjacent; ++r) {
@@ -223,14 +340,13 @@ struct Polytope {
           if (std::includes(v[r].tight.begin(), v[r].tight.end(), common.begin(), common.end())) adjacent = false;
         }
         if (!adjacent) continue;
-        Vert nv;
+        Vert& nv = out.emplace_back();
         NT sp = slack(hs, v[p].x), sq = slack(hs, v[q].x);
         NT lam = sp / (sp - sq);
         for (std::size_t i = 0; i < D; ++i) nv.x[i] = v[p].x[i] + (v[q].x[i] - v[p].x[i]) * lam;
-        nv.xi = enclose<NT, D>(nv.x);
+        nv.set_enclosures();
         nv.tight = common;
         nv.tight.push_back(j);
-        out.push_back(std::move(nv));
       }
     }
     for (std::size_t k = 0; k < v.size(); ++k) {
@@ -238,7 +354,7 @@ struct Polytope {
       if (sg[k] == 0) v[k].tight.push_back(j);
       out.push_back(std::move(v[k]));
     }
-    v = std::move(out);
+    std::swap(v, out);
     return j;
   }
 
@@ -252,8 +368,10 @@ struct Polytope {
   }
   // An upper bound on the max squared distance from c over the vertices (rigorous; for pruning).
   double max_dist2_upper(const IPoint<D>& ci) const {
+    bool origin = true;
+    for (std::size_t i = 0; i < D; ++i) origin = origin && ci[i].lo() == 0 && ci[i].hi() == 0;
     double m = 0;
-    for (const auto& x : v) m = std::max(m, dist2(x.xi, ci).hi());
+    for (const auto& x : v) m = std::max(m, origin ? x.n2i.hi() : dist2(x.xi, ci).hi());
     return m;
   }
   // Is some vertex farther than sqrt(r2) from c?
@@ -346,6 +464,8 @@ struct Polytope {
   }
 
  private:
+  std::vector<int> scratch_sign_;     // clip's signs, reused
+  std::vector<Vert> scratch_verts_;  // clip's output, swapped with v (keeps both allocations)
   int add(const Halfspace<D, NT>& hs) {
     Constraint c{hs, enclose<NT, D>(hs.a), exact::enclose(hs.b)};
     h.push_back(std::move(c));

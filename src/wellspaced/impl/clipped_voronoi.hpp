@@ -6,6 +6,9 @@
 
 namespace kmr::wellspaced {
 
+// 2^-L for 0 ≤ L ≤ 1022, exactly (std::ldexp's library call was 2.6 % of a 2D run; issue 11 §4).
+inline double pow2_neg(int L) { return std::bit_cast<double>(static_cast<std::uint64_t>(1023 - L) << 52); }
+
 // Enclosure of square s = [k·2^-L, (k+1)·2^-L) per axis (endpoints widened when not doubles).
 template <std::size_t D>
 auto WellSpacedSet<D>::Impl::square_bounds(const K& s) -> std::array<std::pair<IntervalNT, IntervalNT>, D> {
@@ -34,7 +37,7 @@ auto WellSpacedSet<D>::Impl::axis_gap(const IntervalNT& c, const IntervalNT& lo,
 template <std::size_t D>
 auto WellSpacedSet<D>::Impl::box_dist2_lower(const Pt& v, const IPoint<D>& vi, const K& s) -> double {
   if (s.level <= 52 && v.is_double()) {
-    double h = std::ldexp(1.0, -s.level), d = 0;
+    double h = pow2_neg(s.level), d = 0;
     for (std::size_t i = 0; i < D; ++i) {
       const double vx = v.below()[i];
       double lo = static_cast<double>(s.k[i]) * h, hi = lo + h, g = 0;
@@ -61,7 +64,7 @@ auto WellSpacedSet<D>::Impl::meets_certificate_region(const Polytope<D, NT>& C, 
   if (s.level <= 52) {  // fast path: the square's corners are doubles; plain double arithmetic,
     // each squared gap sum within a relative 2^-49 of its value (≤ 7 roundings), decided only
     // when the margin 2^-48 separates it from the enclosure of |cv|²
-    const double h = std::ldexp(1.0, -s.level);
+    const double h = pow2_neg(s.level);
     bool undecided = false;
     for (const VertexBounds& c : vb) {
       double glo = 0, ghi = 0;
@@ -159,7 +162,7 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
         continue;
       }
       unsigned ver = C->version;
-      cidx.push_back(C->clip(bisector<D, NT>(vq, rel(cand[i].u))));
+      cidx.push_back(C->clip(bisector_of_origin<D, NT>(rel(cand[i].u))));
       if (C->version != ver) maxd = C->max_dist2_upper(vi);
     }
     limit = 4 * maxd;  // a point of a certificate ball B(c, |cv|) is within 2|cv| of v
@@ -209,7 +212,7 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
           b.lo[i] = x.lo();
           b.hi[i] = x.hi();
         }
-        IntervalNT r = dist2(c.xi, vi);
+        const IntervalNT& r = c.n2i;  // = dist2(c.xi, vi): vi is the origin
         b.r_lo = r.lo();
         b.r_hi = r.hi();
         vb.push_back(b);
@@ -218,6 +221,7 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
     }
     return meets_certificate_region<NT>(*C, vb, v, s);
   };
+  std::vector<Pt> here;  // the visible vertices of a square, sorted
   while (!heap.empty()) {
     const double key = heap.top().key;
     Leaf& L = *heap.top().leaf;
@@ -230,9 +234,9 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
     else res.reads.push_back(s);
     std::size_t before = cand.size();
     {
-      std::vector<Pt> here;
-      for (const Pt& u : L.verts)
-        if (!(u == v) && vtx.at(u).created < t) here.push_back(u);
+      here.clear();
+      for (std::size_t i = 0; i < L.verts.size(); ++i)
+        if (L.born[i] < t && !(L.verts[i] == v)) here.push_back(L.verts[i]);
       std::sort(here.begin(), here.end());
       for (const Pt& u : here) {
         IntervalNT d = dist2(point_in<IntervalNT, D>(u), vabs);

@@ -268,7 +268,7 @@ auto WellSpacedSet<D>::Impl::fill_tier(const Pt& v, const CVResult& cv) -> std::
     hi[i] = NT(1) - vn[i];
   }
   Polytope<D, NT> P = Polytope<D, NT>::box(lo, hi);  // Vor_CV(v) ∩ [0,1]^D
-  for (const Pt& u : cv.cv) P.clip(bisector<D, NT>(vq, rel(u)));
+  for (const Pt& u : cv.cv) P.clip(bisector_of_origin<D, NT>(rel(u)));
   const NT nn2 = dist2(rel(cv.nn), vq);
   const NT lim = sq<NT>(params.rho) * nn2;
   std::vector<Pt> out;
@@ -276,7 +276,7 @@ auto WellSpacedSet<D>::Impl::fill_tier(const Pt& v, const CVResult& cv) -> std::
     KMR_CHECK(out.size() < 100000, "fill does not terminate");
     Pt w = pick<NT>(vq, v, cv.nn, nn2, P);
     out.push_back(w);
-    P.clip(bisector<D, NT>(vq, rel(w)));
+    P.clip(bisector_of_origin<D, NT>(rel(w)));
   }
   return out;
 }

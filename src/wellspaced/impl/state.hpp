@@ -102,6 +102,7 @@ struct WellSpacedSet<D>::Impl {
   struct Leaf {
     const Point<D>* input = nullptr;  // input vertices are doubles
     std::vector<Pt> verts;  // vertices (input and Steiner) inside
+    std::vector<Time> born;  // born[i] = creation time of verts[i] (saves a vtx lookup per scan)
     K key;
     // cache of tree.adjacent_leaves(key), valid if adjacent_ok; the pointers stay valid while it is
     // (unordered_map nodes do not move; a vanished leaf's neighbours are all invalidated)

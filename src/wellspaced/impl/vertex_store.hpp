@@ -38,6 +38,7 @@ auto WellSpacedSet<D>::Impl::place(const Pt& x) -> void {
   V.leaf = l;
   auto& L = leaf_of(l);
   L.verts.push_back(x);
+  L.born.push_back(V.created);
   if (!V.steiner) {
     KMR_CHECK(L.input == nullptr, "crowding violated: two inputs in one square");
     L.input = &vtx.find(x)->first.below();  // inputs are doubles
@@ -48,7 +49,9 @@ template <std::size_t D>
 auto WellSpacedSet<D>::Impl::unplace(const Pt& x) -> void {
   auto& V = vtx.at(x);
   auto& L = leaves.at(V.leaf);
-  L.verts.erase(std::find(L.verts.begin(), L.verts.end(), x));
+  const auto at = std::find(L.verts.begin(), L.verts.end(), x) - L.verts.begin();
+  L.verts.erase(L.verts.begin() + at);
+  L.born.erase(L.born.begin() + at);
   if (!V.steiner) L.input = nullptr;
 }
 
