@@ -1,5 +1,7 @@
 #include "kmesh/kds.hpp"
 
+#include <algorithm>
+#include <limits>
 #include <set>
 
 #include "exact/error.hpp"
@@ -46,14 +48,183 @@ std::set<std::pair<Dyadic, Dyadic>> steiner_positions(const Mesh& m) {
 
 }  // namespace
 
+int KineticMesh::intern(const InputPoint& p, Rank rank, int ray) {
+  auto [it, fresh] = interned_.try_emplace({p.x, p.y, p.vx, p.vy, rank, ray}, static_cast<int>(interned_.size()));
+  return it->second;
+}
+
+// The certificates after a change, kept where they did not change (§4.3): every certificate of the
+// new mesh (and of S_N) is named by its kind, rank and canonical vertices (an input vertex by its
+// trajectory, a Steiner vertex by its nucleus's trajectory, rank and ray); one already kept under
+// that name has the same polynomial of absolute time (its vertices kept their motion) and keeps its
+// isolated failure; only the others are built. A satellite not converted keeps its witness while it
+// is still a vertex of rank ≤ ℓ in the ball; else the nearest one is taken (nearest_witness).
 void KineticMesh::recertify() {
   mesh_ = upd_.mesh();
+  sn_mesh_ = upd_.input_spanner_mesh();
   mesh_time_ = now();
-  certs_ = certificates(mesh_);
-  mesh_certs_ = certs_.size();
-  Mesh sn = upd_.input_spanner_mesh();
-  for (auto& c : certificates(sn))
-    if (c.kind != Certificate::Delaunay) certs_.push_back(std::move(c));
+  constexpr Rank kInputRank = std::numeric_limits<Rank>::min();
+  cv_.assign(mesh_.size(), -1);
+  for (std::size_t v = 0; v < mesh_.size(); ++v) {
+    const VertexInfo& in = mesh_.info[v];
+    cv_[v] = in.steiner ? intern(mesh_.input[in.nucleus], in.rank, in.ray) : intern(mesh_.input[v], kInputRank, -1);
+  }
+  cv_sn_.assign(sn_mesh_.size(), -1);
+  for (std::size_t v = 0; v < sn_mesh_.size(); ++v) cv_sn_[v] = intern(sn_mesh_.input[v], kInputRank, -1);
+  mesh_id_of_.assign(interned_.size(), -1);
+  for (std::size_t v = 0; v < mesh_.size(); ++v) mesh_id_of_[cv_[v]] = static_cast<int>(v);
+
+  auto keep_witness = [&](std::size_t i, const Point2& s) {
+    const Considered& c = mesh_.considered[i];
+    auto it = witness_.find({cv_[c.nucleus], c.ray, c.rank});
+    if (it != witness_.end()) {
+      int w = mesh_id_of_[it->second];
+      if (w >= 0 && w < c.existing && within(s, mesh_.spanner.position(w), 1, c.rank - 2)) return w;
+    }
+    return nearest_witness(mesh_, c, s);
+  };
+  auto specs = certificate_specs(mesh_, keep_witness);
+  const std::size_t n_mesh = specs.size();
+  for (auto& sp : certificate_specs(sn_mesh_))
+    if (sp.kind != Certificate::Delaunay) specs.push_back(sp);
+
+  auto key_of = [&](const CertificateSpec& sp, bool sn) -> Key {
+    const std::vector<int>& cv = sn ? cv_sn_ : cv_;
+    const int kind = sp.kind + (sn ? 16 : 0);
+    int a = cv[sp.a], b = cv[sp.b];
+    switch (sp.kind) {
+      case Certificate::ParentChild:
+        return {kind, sp.rank, a, b, -1, -1};
+      case Certificate::BallNotEmpty:
+        return {kind, sp.rank, cv[sp.c], sp.d, b, -1};
+      case Certificate::Delaunay: {
+        if (sp.d < 0) {  // a triangle, its cyclic order kept, smallest canonical vertex first
+          std::array<int, 3> t{a, b, cv[sp.c]};
+          std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+          return {kind, 0, t[0], t[1], t[2], -1};
+        }
+        int c = cv[sp.c], d = cv[sp.d];  // edge (b, a) has apexes d, c: the same in-circle polynomial
+        return a < b ? Key{kind, 1, a, b, c, d} : Key{kind, 1, b, a, d, c};
+      }
+      default:  // symmetric in its two ends
+        return {kind, sp.rank, std::min(a, b), std::max(a, b), -1, -1};
+    }
+  };
+  std::vector<std::pair<Key, std::size_t>> keys;
+  keys.reserve(specs.size());
+  for (std::size_t i = 0; i < specs.size(); ++i) keys.push_back({key_of(specs[i], i >= n_mesh), i});
+  std::sort(keys.begin(), keys.end());
+  for (std::size_t i = 1; i < keys.size(); ++i)
+    KMR_CHECK(keys[i - 1].first != keys[i].first, "recertify: two certificates with one canonical name");
+
+  created_ = destroyed_ = 0;
+  auto it = certs_.begin();
+  for (auto& [key, i] : keys) {
+    while (it != certs_.end() && it->first < key) {
+      unqueue(it->first, it->second);
+      it = certs_.erase(it);
+      ++destroyed_;
+    }
+    if (it != certs_.end() && it->first == key) {
+      ++it;
+      continue;
+    }
+    const bool sn = i >= n_mesh;
+    const CertificateSpec& sp = specs[i];
+    const std::vector<int>& cv = sn ? cv_sn_ : cv_;
+    Kept k{build_certificate(sn ? sn_mesh_ : mesh_, sp, now()), cv[sp.a], cv[sp.b], sn, std::nullopt, now(), now()};
+    if (k.cert.value.degree() > 0) pending_.insert({now(), key});
+    certs_.emplace_hint(it, key, std::move(k));
+    ++created_;
+  }
+  while (it != certs_.end()) {
+    unqueue(it->first, it->second);
+    it = certs_.erase(it);
+    ++destroyed_;
+  }
+  witness_.clear();
+  for (auto& [key, k] : certs_)
+    if (std::get<0>(key) == Certificate::BallNotEmpty)
+      witness_[{std::get<2>(key), std::get<3>(key), std::get<1>(key)}] = std::get<4>(key);
+}
+
+void KineticMesh::unqueue(const Key& key, const Kept& k) {
+  if (k.cert.value.degree() <= 0) return;
+  if (k.fail) queue_.erase({*k.fail, key});
+  else pending_.erase({k.searched_to, key});
+}
+
+void KineticMesh::isolate(const Key& key, Kept& k, const Dyadic& T) {
+  Dyadic to = std::max(T, now() + Dyadic(1024));  // far ahead once: valid while the certificate lives
+  poly::LatticeRootSolver s(k.cert.value, bits_);
+  k.fail = s.next_failure_after(now(), to);
+  k.searched_from = now();
+  k.searched_to = to;
+  if (k.fail) queue_.insert({*k.fail, key});
+  else pending_.insert({to, key});
+}
+
+// The first lattice interval (counted from now) before T in which a kept certificate changes sign,
+// and every kept certificate failing there. Roots are isolated only for the certificates whose
+// cached answer does not cover [now, T): new ones, and those whose failure is behind now.
+std::optional<std::pair<exact::Integer, std::vector<const KineticMesh::Kept*>>> KineticMesh::next_failures(
+    const Dyadic& T) {
+  std::optional<exact::Integer> best;
+  std::vector<const Kept*> failed;
+  const Dyadic start = now().shifted(bits_);
+  if (!start.is_integer()) {  // now is not a lattice point: the lattice is taken from now, no cache
+    for (auto& [key, k] : certs_) {
+      if (k.cert.value.degree() <= 0) continue;
+      poly::LatticeRootSolver s(shifted_by_dyadic(k.cert.value, now()), bits_);
+      auto f = s.next_failure_after(Dyadic(0), T - now());
+      if (!f || (best && *f > *best)) continue;
+      if (!best || *f < *best) best = f, failed.clear();
+      failed.push_back(&k);
+    }
+    if (!best) return std::nullopt;
+    return std::pair{*best, failed};
+  }
+  const exact::Integer k0 = start.mantissa() << static_cast<unsigned>(start.exponent());
+  while (!queue_.empty() && queue_.begin()->first < k0) {
+    Key key = queue_.begin()->second;
+    queue_.erase(queue_.begin());
+    isolate(key, certs_.at(key), T);
+  }
+  while (!pending_.empty() && pending_.begin()->first < T) {
+    Key key = pending_.begin()->second;
+    pending_.erase(pending_.begin());
+    isolate(key, certs_.at(key), T);
+  }
+  if (queue_.empty() || !(Dyadic(queue_.begin()->first, -bits_) < T)) return std::nullopt;
+  const exact::Integer K = queue_.begin()->first;
+  for (auto it = queue_.begin(); it != queue_.end() && it->first == K; ++it) failed.push_back(&certs_.at(it->second));
+  return std::pair{K - k0, failed};
+}
+
+std::vector<Certificate> KineticMesh::current_certificates() const {
+  std::vector<Certificate> out;
+  for (auto& [key, k] : certs_) {
+    Certificate c = k.cert;
+    c.value = shifted_by_dyadic(k.cert.value, now());
+    if (k.input_spanner) {
+      for (std::size_t v = 0; v < cv_sn_.size(); ++v) {
+        if (cv_sn_[v] == k.end_a) c.a = static_cast<int>(v);
+        if (cv_sn_[v] == k.end_b) c.b = static_cast<int>(v);
+      }
+    } else {
+      c.a = mesh_id_of_[k.end_a];
+      c.b = mesh_id_of_[k.end_b];
+    }
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+std::vector<Certificate> KineticMesh::recomputed_certificates() const {
+  std::vector<Certificate> out = certificates(mesh_);
+  for (auto& c : certificates(sn_mesh_))
+    if (c.kind != Certificate::Delaunay) out.push_back(std::move(c));
+  return out;
 }
 
 void KineticMesh::refresh(const std::string& what, std::size_t events, std::size_t moved) {
@@ -65,32 +236,29 @@ void KineticMesh::refresh(const std::string& what, std::size_t events, std::size
   Batch b{now(), events, what, mesh_.size(), kept, before.size()};
   if (moved > 0) b.ops = upd_.last().ops, b.affected = upd_.last().affected;
   b.moved = moved;
+  b.certs_created = created_;
+  b.certs_destroyed = destroyed_;
   batches_.push_back(b);
 }
 
 void KineticMesh::run_until(const Dyadic& T, const std::function<void(const Batch&)>& after) {
   KMR_CHECK(T >= now(), "run_until: time runs backwards");
   while (now() < T) {
-    auto nb = next_batch(certs_, bits_, Dyadic(0), T - now());
+    auto nb = next_failures(T);
     if (!nb) {
       upd_.advance_to(T);  // no certificate fails: the same mesh, moved
       recertify();
       break;
     }
-    auto& [k, failed] = *nb;
-    // The nuclei of the vertices of the failed certificates (input ids of mesh_ or of S_N's mesh,
-    // which share the canonical input numbering). Delaunay failures change no vertex of M.
+    // The nuclei of the vertices of the failed certificates (ids of mesh_; an end of an S_N
+    // certificate is an input vertex, its own nucleus). Delaunay failures change no vertex of M.
     std::set<int> nuclei;
-    for (std::size_t i : failed) {
-      const Certificate& c = certs_[i];
-      if (c.kind == Certificate::Delaunay) continue;
-      if (i < mesh_certs_) {
-        nuclei.insert(mesh_.info[c.a].nucleus);
-        nuclei.insert(mesh_.info[c.b].nucleus);
-      } else {
-        nuclei.insert(c.a);
-        nuclei.insert(c.b);
-      }
+    auto& [k, failed] = *nb;
+    for (const Kept* f : failed) {
+      const Kept& c = *f;
+      if (c.cert.kind == Certificate::Delaunay) continue;
+      nuclei.insert(mesh_.info[mesh_id_of_[c.end_a]].nucleus);
+      nuclei.insert(mesh_.info[mesh_id_of_[c.end_b]].nucleus);
     }
     std::vector<InputPoint> moved;
     for (int v : nuclei) moved.push_back(mesh_.input[v]);
