@@ -202,18 +202,21 @@ std::optional<std::pair<exact::Integer, std::vector<const KineticMesh::Kept*>>> 
 }
 
 std::vector<Certificate> KineticMesh::current_certificates() const {
+  std::vector<int> sn_id_of(interned_.size(), -1);
+  for (std::size_t v = 0; v < cv_sn_.size(); ++v) sn_id_of[cv_sn_[v]] = static_cast<int>(v);
   std::vector<Certificate> out;
   for (auto& [key, k] : certs_) {
+    const std::vector<int>& id = k.input_spanner ? sn_id_of : mesh_id_of_;
     Certificate c = k.cert;
     c.value = shifted_by_dyadic(k.cert.value, now());
-    if (k.input_spanner) {
-      for (std::size_t v = 0; v < cv_sn_.size(); ++v) {
-        if (cv_sn_[v] == k.end_a) c.a = static_cast<int>(v);
-        if (cv_sn_[v] == k.end_b) c.b = static_cast<int>(v);
-      }
-    } else {
-      c.a = mesh_id_of_[k.end_a];
-      c.b = mesh_id_of_[k.end_b];
+    c.a = id[k.end_a];
+    c.b = id[k.end_b];
+    if (c.kind == Certificate::Delaunay) {  // named as certificates(mesh()) names it
+      std::array<int, 3> t{id[std::get<2>(key)], id[std::get<3>(key)], id[std::get<4>(key)]};
+      if (std::get<1>(key) == 0) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+      else if (t[0] > t[1]) std::swap(t[0], t[1]);
+      c.a = t[0];
+      c.b = t[1];
     }
     out.push_back(std::move(c));
   }
