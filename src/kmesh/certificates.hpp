@@ -1,6 +1,7 @@
 #pragma once
 // The certificates of §4.1.2 and §4.3 for a constructed mesh of moving points, as certificate
-// polynomials of time (the first step of the KDS; the update of Fig. 4.5 is not implemented).
+// polynomials of time (the kinetic KDS, kmesh/kds.hpp, keeps them between batches: it enumerates
+// them with certificate_specs and builds only the new ones with build_certificate).
 // Every vertex moves like its nucleus: position(t) = position(0) + kScale·(vx, vy)·t.
 // Kinds and the inequality each certifies (value(t) ≥ 0, or > 0 when `strict`):
 //  * ParentChild   |x parent|² ≤ (2^(top+1))²            (§4.1.2)

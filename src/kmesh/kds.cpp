@@ -154,11 +154,15 @@ void KineticMesh::unqueue(const Key& key, const Kept& k) {
   else pending_.erase({k.searched_to, key});
 }
 
+// The window [now, to) is searched in pieces: a certificate with no failure in [searched_from,
+// searched_to) (searched_from ≤ now) is searched on from max(now, searched_to) only, 16 lattice
+// steps (or up to T) at a time, so that a short-lived certificate costs no far-ahead isolation.
 void KineticMesh::isolate(const Key& key, Kept& k, const Dyadic& T) {
-  Dyadic to = std::max(T, now() + Dyadic(1024));  // far ahead once: valid while the certificate lives
+  Dyadic from = !k.fail && k.searched_to > now() ? k.searched_to : now();
+  if (k.fail || k.searched_to < now()) k.searched_from = now();
+  Dyadic to = std::max(T, from + Dyadic(16) * Dyadic(1, -bits_));
   poly::LatticeRootSolver s(k.cert.value, bits_);
-  k.fail = s.next_failure_after(now(), to);
-  k.searched_from = now();
+  k.fail = s.next_failure_after(from, to);
   k.searched_to = to;
   if (k.fail) queue_.insert({*k.fail, key});
   else pending_.insert({to, key});

@@ -15,11 +15,20 @@
 //  * a batch is the set of certificates whose first sign change falls in one lattice interval; a
 //    batch of Delaunay certificates only (no spanner or ball certificate) changes no vertex of M;
 //  * mesh() passes the brute-force checks of an updated mesh (kmesh/invariants.hpp,
-//    check_all_updated: spanner, U1, L4.3.2, L4.2.6, L4.2.9, L4.2.10, Delaunay, 9/2-well-spaced).
+//    check_all_updated: spanner, U1, L4.3.2, L4.2.6, L4.2.9, L4.2.10, Delaunay, 9/2-well-spaced);
+//  * incremental certificates: a certificate is kept under a canonical name (kind, rank, and its
+//    vertices: an input vertex by its trajectory, a Steiner vertex by its nucleus's trajectory, rank
+//    and ray — never an id of mesh() nor of the Updater), with its polynomial of absolute time and
+//    its isolated first failure; after a change only certificates under new names are built and
+//    root-isolated, and those whose names are gone are dropped. The kept set equals the from-scratch
+//    recomputation (certificates(mesh()) and S_N's) after every batch and update, except that a
+//    ball-not-empty certificate keeps its witness while it stays a vertex of rank ≤ ℓ in the ball
+//    (the recomputation takes the nearest vertex at now) — tested in kds_test.cpp.
 // Deviations (spec/kmesh.md): F_ℓ of a kinetic batch is every satellite of the nuclei involved
 // (not only the satellites of the failed certificates), so the work per event is O(log Δ) times the
-// affected nuclei; the certificates and the Delaunay stage are recomputed globally after a batch
-// (O(|M|), counted apart from the local operations of Fig. 4.5).
+// affected nuclei; the renumbering, the Delaunay stage and the enumeration of the certificates'
+// names are still global after a batch (O(|M|), integer work; counted apart from the local
+// operations of Fig. 4.5); building polynomials and isolating roots is done for new names only.
 #include <functional>
 #include <map>
 #include <optional>
