@@ -39,10 +39,16 @@ KineticMesh::KineticMesh(std::vector<InputPoint> trajectories, int lattice_bits)
 // certificates of M and of S_N as polynomials of t − now.
 namespace {
 
-std::set<std::pair<Dyadic, Dyadic>> steiner_positions(const Mesh& m) {
+// The Steiner vertices of m moved by dt (each with its nucleus), for the stability measure.
+std::set<std::pair<Dyadic, Dyadic>> steiner_positions(const Mesh& m, const Dyadic& dt) {
   std::set<std::pair<Dyadic, Dyadic>> s;
   for (std::size_t v = 0; v < m.size(); ++v)
-    if (m.info[v].steiner) s.insert({m.spanner.position(int(v))[0], m.spanner.position(int(v))[1]});
+    if (m.info[v].steiner) {
+      const Point2& p = m.spanner.position(int(v));
+      const InputPoint& q = m.input[m.info[v].nucleus];
+      if (dt.is_zero()) s.insert({p[0], p[1]});
+      else s.insert({p[0] + Dyadic(q.vx * kScale) * dt, p[1] + Dyadic(q.vy * kScale) * dt});
+    }
   return s;
 }
 
@@ -235,9 +241,9 @@ std::vector<Certificate> KineticMesh::recomputed_certificates() const {
 }
 
 void KineticMesh::refresh(const std::string& what, std::size_t events, std::size_t moved) {
-  auto before = steiner_positions(mesh_time_ == now() ? mesh_ : moved_to(mesh_, now() - mesh_time_));
+  auto before = steiner_positions(mesh_, now() - mesh_time_);
   recertify();
-  auto after = steiner_positions(mesh_);
+  auto after = steiner_positions(mesh_, Dyadic(0));
   std::size_t kept = 0;
   for (auto& p : before) kept += after.count(p);
   Batch b{now(), events, what, mesh_.size(), kept, before.size()};
