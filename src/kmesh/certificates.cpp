@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "exact/error.hpp"
@@ -140,15 +141,31 @@ std::vector<CertificateSpec> certificate_specs(const Mesh& m, const WitnessChoic
   return out;
 }
 
-Certificate build_certificate(const Mesh& m, const CertificateSpec& sp, const Dyadic& at) {
-  const Spanner& S = m.spanner;
-  auto mp = [&](int i) {
-    const InputPoint& p = m.input[m.info[i].nucleus];
-    Dyadic v[2] = {Dyadic(p.vx * kScale), Dyadic(p.vy * kScale)};
-    MPoint q;
-    for (int k = 0; k < 2; ++k) q[k] = at.is_zero() ? DPoly(S.position(i)[k], v[k]) : DPoly(S.position(i)[k] - v[k] * at, v[k]);
-    return q;
-  };
+namespace {
+
+// The moving point of each vertex of m (position at τ = at, its nucleus's velocity), built once.
+class MovingPoints {
+ public:
+  MovingPoints(const Mesh& m, const Dyadic& at) : m_(m), at_(at), cache_(m.size()) {}
+  const MPoint& operator()(int i) {
+    if (!cache_[i]) {
+      const InputPoint& p = m_.input[m_.info[i].nucleus];
+      Dyadic v[2] = {Dyadic(p.vx * kScale), Dyadic(p.vy * kScale)};
+      const Point2& x = m_.spanner.position(i);
+      MPoint q;
+      for (int k = 0; k < 2; ++k) q[k] = at_.is_zero() ? DPoly(x[k], v[k]) : DPoly(x[k] - v[k] * at_, v[k]);
+      cache_[i] = std::move(q);
+    }
+    return *cache_[i];
+  }
+
+ private:
+  const Mesh& m_;
+  Dyadic at_;
+  std::vector<std::optional<MPoint>> cache_;
+};
+
+Certificate build_one(const CertificateSpec& sp, MovingPoints& mp) {
   auto d2 = [&](const MPoint& a, const MPoint& q) { return geometry::squared_distance<2, DPoly>(a, q); };
   auto satellite = [&]() {
     MPoint s = mp(sp.c);
@@ -186,11 +203,23 @@ Certificate build_certificate(const Mesh& m, const CertificateSpec& sp, const Dy
   return out;
 }
 
-std::vector<Certificate> certificates(const Mesh& m) {
+}  // namespace
+
+Certificate build_certificate(const Mesh& m, const CertificateSpec& sp, const Dyadic& at) {
+  MovingPoints mp(m, at);
+  return build_one(sp, mp);
+}
+
+std::vector<Certificate> build_certificates(const Mesh& m, const std::vector<CertificateSpec>& specs,
+                                            const Dyadic& at) {
+  MovingPoints mp(m, at);
   std::vector<Certificate> out;
-  for (auto& sp : certificate_specs(m)) out.push_back(build_certificate(m, sp, Dyadic(0)));
+  out.reserve(specs.size());
+  for (auto& sp : specs) out.push_back(build_one(sp, mp));
   return out;
 }
+
+std::vector<Certificate> certificates(const Mesh& m) { return build_certificates(m, certificate_specs(m), Dyadic(0)); }
 
 poly::Polynomial shifted_by_dyadic(const poly::Polynomial& p, const Dyadic& d) {
   if (p.degree() <= 0 || d.is_zero()) return p;

@@ -64,6 +64,8 @@ std::vector<CertificateSpec> certificate_specs(const Mesh& m, const WitnessChoic
 // The polynomial of one spec in the variable τ, m's positions being those at τ = at (certificates(m):
 // at = 0, polynomials of t − now; the kinetic KDS: at = now, polynomials of absolute time).
 Certificate build_certificate(const Mesh& m, const CertificateSpec& s, const Dyadic& at);
+// The same for many specs, each vertex's moving point built once.
+std::vector<Certificate> build_certificates(const Mesh& m, const std::vector<CertificateSpec>& specs, const Dyadic& at);
 
 // p(t + d) for a dyadic d, times a positive power of two (same signs; integer coefficients).
 poly::Polynomial shifted_by_dyadic(const poly::Polynomial& p, const Dyadic& d);

@@ -124,6 +124,7 @@ void KineticMesh::recertify() {
     KMR_CHECK(keys[i - 1].first != keys[i].first, "recertify: two certificates with one canonical name");
 
   created_ = destroyed_ = 0;
+  std::vector<std::pair<Key, std::size_t>> fresh[2];  // new names: of mesh_, of S_N
   auto it = certs_.begin();
   for (auto& [key, i] : keys) {
     while (it != certs_.end() && it->first < key) {
@@ -135,18 +136,25 @@ void KineticMesh::recertify() {
       ++it;
       continue;
     }
-    const bool sn = i >= n_mesh;
-    const CertificateSpec& sp = specs[i];
-    const std::vector<int>& cv = sn ? cv_sn_ : cv_;
-    Kept k{build_certificate(sn ? sn_mesh_ : mesh_, sp, now()), cv[sp.a], cv[sp.b], sn, std::nullopt, now(), now()};
-    if (k.cert.value.degree() > 0) pending_.insert({now(), key});
-    certs_.emplace_hint(it, key, std::move(k));
-    ++created_;
+    fresh[i >= n_mesh].push_back({key, i});
   }
   while (it != certs_.end()) {
     unqueue(it->first, it->second);
     it = certs_.erase(it);
     ++destroyed_;
+  }
+  for (int sn = 0; sn < 2; ++sn) {  // the new certificates, built together (shared moving points)
+    std::vector<CertificateSpec> todo;
+    for (auto& [key, i] : fresh[sn]) todo.push_back(specs[i]);
+    auto built = build_certificates(sn ? sn_mesh_ : mesh_, todo, now());
+    const std::vector<int>& cv = sn ? cv_sn_ : cv_;
+    for (std::size_t f = 0; f < todo.size(); ++f) {
+      const Key& key = fresh[sn][f].first;
+      Kept k{std::move(built[f]), cv[todo[f].a], cv[todo[f].b], sn == 1, std::nullopt, now(), now()};
+      if (k.cert.value.degree() > 0) pending_.insert({now(), key});
+      certs_.emplace(key, std::move(k));
+      ++created_;
+    }
   }
   witness_.clear();
   for (auto& [key, k] : certs_)
