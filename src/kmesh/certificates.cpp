@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "exact/error.hpp"
@@ -73,29 +74,28 @@ std::vector<std::array<exact::Integer, 2>> vertex_velocities(const Mesh& m) {
   return v;
 }
 
-std::vector<Certificate> certificates(const Mesh& m) {
+int nearest_witness(const Mesh& m, const Considered& c, const Point2& s0) {
+  const Spanner& S = m.spanner;
+  int w = -1;  // the nearest earlier vertex in the ball, found by brute force
+  for (int x = 0; x < c.existing; ++x)
+    if (within(s0, S.position(x), 1, c.rank - 2) &&
+        (w < 0 || geometry::compare_squared_distance<2, Dyadic>(s0, S.position(x), S.position(w)) < 0))
+      w = x;
+  return w;
+}
+
+std::vector<CertificateSpec> certificate_specs(const Mesh& m, const WitnessChoice& witness) {
   const Spanner& S = m.spanner;
   const int N = static_cast<int>(m.size());
-  auto vel = vertex_velocities(m);
-  std::vector<MPoint> mp(N);
-  for (int i = 0; i < N; ++i)
-    for (int k = 0; k < 2; ++k) mp[i][k] = DPoly(S.position(i)[k], Dyadic(vel[i][k]));
-  auto d2 = [&](int a, const MPoint& q) { return geometry::squared_distance<2, DPoly>(mp[a], q); };
-  std::vector<Certificate> out;
-  // value = ±(|ab|² − (k·kScale·2^l)²): below = true for "≤" certificates.
-  auto dist_cert = [&](Certificate::Kind kind, int a, const MPoint& q, int b, std::int64_t k, Rank l, bool below) {
-    DPoly v = d2(a, q) - DPoly(threshold2(k, l));
-    if (below) v = -v;
-    out.push_back({kind, a, b, l, !below, to_poly(v)});
-  };
+  std::vector<CertificateSpec> out;
   for (int x = 0; x < N; ++x) {
-    if (x != S.root()) dist_cert(Certificate::ParentChild, x, mp[S.parent(x)], S.parent(x), 1, S.top(x) + 1, true);
+    if (x != S.root()) out.push_back({Certificate::ParentChild, x, S.parent(x), S.top(x) + 1, false});
     for (auto& [l, list] : S.all_neighbors(x)) {
       std::set<int> nb(list.begin(), list.end());
       for (int y : list)
         if (y > x) {
-          dist_cert(Certificate::Separation, x, mp[y], y, 1, l, false);
-          dist_cert(Certificate::Edge, x, mp[y], y, kC, l, true);
+          out.push_back({Certificate::Separation, x, y, l, true});
+          out.push_back({Certificate::Edge, x, y, l, false});
         }
       // Potential neighbours: cousins (children of the (l+1)-neighbours of x's rank-(l+1) representative).
       if (l >= S.top_rank()) continue;
@@ -108,38 +108,27 @@ std::vector<Certificate> certificates(const Mesh& m) {
         for (int y : S.kids(z, l)) cousins.insert(y);
       }
       for (int y : cousins)
-        if (y > x && !nb.count(y) && S.top(y) >= l) dist_cert(Certificate::Potential, x, mp[y], y, kC, l, false);
+        if (y > x && !nb.count(y) && S.top(y) >= l) out.push_back({Certificate::Potential, x, y, l, true});
     }
   }
   // Conversion decisions (§4.3).
-  for (auto& c : m.considered) {
-    MPoint s;
-    const Point2 off = satellite_offset(c.ray, c.rank);
-    for (int k = 0; k < 2; ++k) s[k] = mp[c.nucleus][k] + DPoly(off[k]);
-    Point2 s0 = satellite_position(S.position(c.nucleus), c.ray, c.rank);
+  for (std::size_t i = 0; i < m.considered.size(); ++i) {
+    const Considered& c = m.considered[i];
     if (!c.converted) {
-      int w = -1;  // the nearest earlier vertex in the ball, found by brute force
-      for (int x = 0; x < c.existing; ++x)
-        if (within(s0, S.position(x), 1, c.rank - 2) &&
-            (w < 0 || geometry::compare_squared_distance<2, Dyadic>(s0, S.position(x), S.position(w)) < 0))
-          w = x;
+      Point2 s0 = satellite_position(S.position(c.nucleus), c.ray, c.rank);
+      int w = witness ? witness(i, s0) : nearest_witness(m, c, s0);
       KMR_CHECK(w >= 0, "certificates: a satellite not converted has no vertex in its ball");
-      DPoly v = DPoly(threshold2(1, c.rank - 2)) - geometry::squared_distance<2, DPoly>(s, mp[w]);
-      out.push_back({Certificate::BallNotEmpty, c.nucleus, w, c.rank, false, to_poly(v)});
+      out.push_back({Certificate::BallNotEmpty, c.nucleus, w, c.rank, false, c.nucleus, c.ray});
     } else {
       std::set<int> seen;
       for (Rank l = c.rank - 6; l <= c.rank - 1; ++l)
         for (int v : S.neighbors(c.vertex, l))
-          if (v < c.vertex && seen.insert(v).second) {
-            DPoly val = geometry::squared_distance<2, DPoly>(s, mp[v]) - DPoly(threshold2(1, c.rank - 2));
-            out.push_back({Certificate::BallEmpty, c.vertex, v, c.rank, true, to_poly(val)});
-          }
+          if (v < c.vertex && seen.insert(v).second)
+            out.push_back({Certificate::BallEmpty, c.vertex, v, c.rank, true, c.nucleus, c.ray});
     }
   }
   // Delaunay: every triangle stays counter-clockwise, and every interior edge locally Delaunay.
-  for (auto& t : m.triangles)
-    out.push_back({Certificate::Delaunay, t[0], t[1], 0, true,
-                   to_poly(geometry::orientation_value<DPoly>(mp[t[0]], mp[t[1]], mp[t[2]]))});
+  for (auto& t : m.triangles) out.push_back({Certificate::Delaunay, t[0], t[1], 0, true, t[2], -1});
   std::map<std::pair<int, int>, int> apex;
   for (auto& t : m.triangles)
     for (int i = 0; i < 3; ++i) apex[{t[i], t[(i + 1) % 3]}] = t[(i + 2) % 3];
@@ -147,11 +136,103 @@ std::vector<Certificate> certificates(const Mesh& m) {
     if (e.first > e.second) continue;
     auto it = apex.find({e.second, e.first});
     if (it == apex.end()) continue;
-    int d = it->second;
-    DPoly v = -geometry::side_of_oriented_circle_value<DPoly>(mp[e.first], mp[e.second], mp[c], mp[d]);
-    out.push_back({Certificate::Delaunay, e.first, e.second, 0, true, to_poly(v)});
+    out.push_back({Certificate::Delaunay, e.first, e.second, 0, true, c, it->second});
   }
   return out;
+}
+
+namespace {
+
+// The moving point of each vertex of m (position at τ = at, its nucleus's velocity), built once.
+class MovingPoints {
+ public:
+  MovingPoints(const Mesh& m, const Dyadic& at) : m_(m), at_(at), cache_(m.size()) {}
+  const MPoint& operator()(int i) {
+    if (!cache_[i]) {
+      const InputPoint& p = m_.input[m_.info[i].nucleus];
+      Dyadic v[2] = {Dyadic(p.vx * kScale), Dyadic(p.vy * kScale)};
+      const Point2& x = m_.spanner.position(i);
+      MPoint q;
+      for (int k = 0; k < 2; ++k) q[k] = at_.is_zero() ? DPoly(x[k], v[k]) : DPoly(x[k] - v[k] * at_, v[k]);
+      cache_[i] = std::move(q);
+    }
+    return *cache_[i];
+  }
+
+ private:
+  const Mesh& m_;
+  Dyadic at_;
+  std::vector<std::optional<MPoint>> cache_;
+};
+
+Certificate build_one(const CertificateSpec& sp, MovingPoints& mp) {
+  auto d2 = [&](const MPoint& a, const MPoint& q) { return geometry::squared_distance<2, DPoly>(a, q); };
+  auto satellite = [&]() {
+    MPoint s = mp(sp.c);
+    const Point2 off = satellite_offset(sp.d, sp.rank);
+    for (int k = 0; k < 2; ++k) s[k] = s[k] + DPoly(off[k]);
+    return s;
+  };
+  Certificate out{sp.kind, sp.a, sp.b, sp.rank, sp.strict, {}};
+  switch (sp.kind) {
+    case Certificate::ParentChild:  // |x parent|² ≤ (2^(top+1))²
+      out.value = to_poly(-(d2(mp(sp.a), mp(sp.b)) - DPoly(threshold2(1, sp.rank))));
+      break;
+    case Certificate::Separation:
+      out.value = to_poly(d2(mp(sp.a), mp(sp.b)) - DPoly(threshold2(1, sp.rank)));
+      break;
+    case Certificate::Edge:
+      out.value = to_poly(-(d2(mp(sp.a), mp(sp.b)) - DPoly(threshold2(kC, sp.rank))));
+      break;
+    case Certificate::Potential:
+      out.value = to_poly(d2(mp(sp.a), mp(sp.b)) - DPoly(threshold2(kC, sp.rank)));
+      break;
+    case Certificate::BallNotEmpty:
+      out.value = to_poly(DPoly(threshold2(1, sp.rank - 2)) - d2(satellite(), mp(sp.b)));
+      break;
+    case Certificate::BallEmpty:
+      out.value = to_poly(d2(satellite(), mp(sp.b)) - DPoly(threshold2(1, sp.rank - 2)));
+      break;
+    case Certificate::Delaunay:
+      if (sp.d < 0)
+        out.value = to_poly(geometry::orientation_value<DPoly>(mp(sp.a), mp(sp.b), mp(sp.c)));
+      else
+        out.value = to_poly(-geometry::side_of_oriented_circle_value<DPoly>(mp(sp.a), mp(sp.b), mp(sp.c), mp(sp.d)));
+      break;
+  }
+  return out;
+}
+
+}  // namespace
+
+Certificate build_certificate(const Mesh& m, const CertificateSpec& sp, const Dyadic& at) {
+  MovingPoints mp(m, at);
+  return build_one(sp, mp);
+}
+
+std::vector<Certificate> build_certificates(const Mesh& m, const std::vector<CertificateSpec>& specs,
+                                            const Dyadic& at) {
+  MovingPoints mp(m, at);
+  std::vector<Certificate> out;
+  out.reserve(specs.size());
+  for (auto& sp : specs) out.push_back(build_one(sp, mp));
+  return out;
+}
+
+std::vector<Certificate> certificates(const Mesh& m) { return build_certificates(m, certificate_specs(m), Dyadic(0)); }
+
+poly::Polynomial shifted_by_dyadic(const poly::Polynomial& p, const Dyadic& d) {
+  if (p.degree() <= 0 || d.is_zero()) return p;
+  if (d.is_integer()) return p.shifted_by(d.mantissa() << static_cast<unsigned>(d.exponent()));
+  // d = m / 2^e: r(u) = 2^(e·deg) p(u / 2^e) has integer coefficients; r(u + m); back with u = 2^e t.
+  const unsigned e = static_cast<unsigned>(-d.exponent());
+  const int n = p.degree();
+  std::vector<exact::Integer> c(p.coefficients());
+  for (int i = 0; i <= n; ++i) c[i] <<= e * static_cast<unsigned>(n - i);
+  poly::Polynomial r = poly::Polynomial(c).shifted_by(d.mantissa());
+  std::vector<exact::Integer> q(r.coefficients());
+  for (std::size_t i = 0; i < q.size(); ++i) q[i] <<= e * static_cast<unsigned>(i);
+  return poly::Polynomial(q);
 }
 
 bool holds_at(const Certificate& c, const Dyadic& t) {

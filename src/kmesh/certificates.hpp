@@ -1,6 +1,7 @@
 #pragma once
 // The certificates of §4.1.2 and §4.3 for a constructed mesh of moving points, as certificate
-// polynomials of time (the first step of the KDS; the update of Fig. 4.5 is not implemented).
+// polynomials of time (the kinetic KDS, kmesh/kds.hpp, keeps them between batches: it enumerates
+// them with certificate_specs and builds only the new ones with build_certificate).
 // Every vertex moves like its nucleus: position(t) = position(0) + kScale·(vx, vy)·t.
 // Kinds and the inequality each certifies (value(t) ≥ 0, or > 0 when `strict`):
 //  * ParentChild   |x parent|² ≤ (2^(top+1))²            (§4.1.2)
@@ -19,6 +20,7 @@
 // construction time); first_failure() is the first lattice interval where one changes sign; at any
 // dyadic time before it, the mesh moved to that time still passes the brute-force spanner, ball and
 // Delaunay checks.
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -42,6 +44,31 @@ const char* kind_name(Certificate::Kind k);
 std::vector<std::array<exact::Integer, 2>> vertex_velocities(const Mesh& m);
 
 std::vector<Certificate> certificates(const Mesh& m);
+
+// A certificate before its polynomial (what it names, as ids of the mesh): certificates(m) is
+// build_certificate over certificate_specs(m). c, d: the third vertex of a Delaunay triangle (d = −1)
+// or the apexes of an interior edge (a, b) (c left of a→b); for the ball certificates c = the
+// satellite's nucleus, d = its ray (a = the nucleus again for BallNotEmpty, as in Certificate).
+struct CertificateSpec {
+  Certificate::Kind kind;
+  int a, b;
+  Rank rank;
+  bool strict;
+  int c = -1, d = -1;
+};
+// The witness of a satellite not converted (index into m.considered, its position): by default the
+// nearest vertex of rank ≤ ℓ in its ball (brute force; ties: smaller id).
+using WitnessChoice = std::function<int(std::size_t considered, const Point2& s)>;
+int nearest_witness(const Mesh& m, const Considered& c, const Point2& s);
+std::vector<CertificateSpec> certificate_specs(const Mesh& m, const WitnessChoice& witness = {});
+// The polynomial of one spec in the variable τ, m's positions being those at τ = at (certificates(m):
+// at = 0, polynomials of t − now; the kinetic KDS: at = now, polynomials of absolute time).
+Certificate build_certificate(const Mesh& m, const CertificateSpec& s, const Dyadic& at);
+// The same for many specs, each vertex's moving point built once.
+std::vector<Certificate> build_certificates(const Mesh& m, const std::vector<CertificateSpec>& specs, const Dyadic& at);
+
+// p(t + d) for a dyadic d, times a positive power of two (same signs; integer coefficients).
+poly::Polynomial shifted_by_dyadic(const poly::Polynomial& p, const Dyadic& d);
 
 // Whether c holds at the dyadic time t (exact; an identically zero Delaunay polynomial holds).
 bool holds_at(const Certificate& c, const Dyadic& t);

@@ -1,5 +1,7 @@
 #include "kmesh/kds.hpp"
 
+#include <algorithm>
+#include <limits>
 #include <set>
 
 #include "exact/error.hpp"
@@ -37,60 +39,247 @@ KineticMesh::KineticMesh(std::vector<InputPoint> trajectories, int lattice_bits)
 // certificates of M and of S_N as polynomials of t − now.
 namespace {
 
-std::set<std::pair<Dyadic, Dyadic>> steiner_positions(const Mesh& m) {
+// The Steiner vertices of m moved by dt (each with its nucleus), for the stability measure.
+std::set<std::pair<Dyadic, Dyadic>> steiner_positions(const Mesh& m, const Dyadic& dt) {
   std::set<std::pair<Dyadic, Dyadic>> s;
   for (std::size_t v = 0; v < m.size(); ++v)
-    if (m.info[v].steiner) s.insert({m.spanner.position(int(v))[0], m.spanner.position(int(v))[1]});
+    if (m.info[v].steiner) {
+      const Point2& p = m.spanner.position(int(v));
+      const InputPoint& q = m.input[m.info[v].nucleus];
+      if (dt.is_zero()) s.insert({p[0], p[1]});
+      else s.insert({p[0] + Dyadic(q.vx * kScale) * dt, p[1] + Dyadic(q.vy * kScale) * dt});
+    }
   return s;
 }
 
 }  // namespace
 
+int KineticMesh::intern(const InputPoint& p, Rank rank, int ray) {
+  auto [it, fresh] = interned_.try_emplace({p.x, p.y, p.vx, p.vy, rank, ray}, static_cast<int>(interned_.size()));
+  return it->second;
+}
+
+// The certificates after a change, kept where they did not change (§4.3): every certificate of the
+// new mesh (and of S_N) is named by its kind, rank and canonical vertices (an input vertex by its
+// trajectory, a Steiner vertex by its nucleus's trajectory, rank and ray); one already kept under
+// that name has the same polynomial of absolute time (its vertices kept their motion) and keeps its
+// isolated failure; only the others are built. A satellite not converted keeps its witness while it
+// is still a vertex of rank ≤ ℓ in the ball; else the nearest one is taken (nearest_witness).
 void KineticMesh::recertify() {
   mesh_ = upd_.mesh();
+  sn_mesh_ = upd_.input_spanner_mesh();
   mesh_time_ = now();
-  certs_ = certificates(mesh_);
-  mesh_certs_ = certs_.size();
-  Mesh sn = upd_.input_spanner_mesh();
-  for (auto& c : certificates(sn))
-    if (c.kind != Certificate::Delaunay) certs_.push_back(std::move(c));
+  constexpr Rank kInputRank = std::numeric_limits<Rank>::min();
+  cv_.assign(mesh_.size(), -1);
+  for (std::size_t v = 0; v < mesh_.size(); ++v) {
+    const VertexInfo& in = mesh_.info[v];
+    cv_[v] = in.steiner ? intern(mesh_.input[in.nucleus], in.rank, in.ray) : intern(mesh_.input[v], kInputRank, -1);
+  }
+  cv_sn_.assign(sn_mesh_.size(), -1);
+  for (std::size_t v = 0; v < sn_mesh_.size(); ++v) cv_sn_[v] = intern(sn_mesh_.input[v], kInputRank, -1);
+  mesh_id_of_.assign(interned_.size(), -1);
+  for (std::size_t v = 0; v < mesh_.size(); ++v) mesh_id_of_[cv_[v]] = static_cast<int>(v);
+
+  auto keep_witness = [&](std::size_t i, const Point2& s) {
+    const Considered& c = mesh_.considered[i];
+    auto it = witness_.find({cv_[c.nucleus], c.ray, c.rank});
+    if (it != witness_.end()) {
+      int w = mesh_id_of_[it->second];
+      if (w >= 0 && w < c.existing && within(s, mesh_.spanner.position(w), 1, c.rank - 2)) return w;
+    }
+    return nearest_witness(mesh_, c, s);
+  };
+  auto specs = certificate_specs(mesh_, keep_witness);
+  const std::size_t n_mesh = specs.size();
+  for (auto& sp : certificate_specs(sn_mesh_))
+    if (sp.kind != Certificate::Delaunay) specs.push_back(sp);
+
+  auto key_of = [&](const CertificateSpec& sp, bool sn) -> Key {
+    const std::vector<int>& cv = sn ? cv_sn_ : cv_;
+    const int kind = sp.kind + (sn ? 16 : 0);
+    int a = cv[sp.a], b = cv[sp.b];
+    switch (sp.kind) {
+      case Certificate::ParentChild:
+        return {kind, sp.rank, a, b, -1, -1};
+      case Certificate::BallNotEmpty:
+        return {kind, sp.rank, cv[sp.c], sp.d, b, -1};
+      case Certificate::Delaunay: {
+        if (sp.d < 0) {  // a triangle, its cyclic order kept, smallest canonical vertex first
+          std::array<int, 3> t{a, b, cv[sp.c]};
+          std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+          return {kind, 0, t[0], t[1], t[2], -1};
+        }
+        int c = cv[sp.c], d = cv[sp.d];  // edge (b, a) has apexes d, c: the same in-circle polynomial
+        return a < b ? Key{kind, 1, a, b, c, d} : Key{kind, 1, b, a, d, c};
+      }
+      default:  // symmetric in its two ends
+        return {kind, sp.rank, std::min(a, b), std::max(a, b), -1, -1};
+    }
+  };
+  std::vector<std::pair<Key, std::size_t>> keys;
+  keys.reserve(specs.size());
+  for (std::size_t i = 0; i < specs.size(); ++i) keys.push_back({key_of(specs[i], i >= n_mesh), i});
+  std::sort(keys.begin(), keys.end());
+  for (std::size_t i = 1; i < keys.size(); ++i)
+    KMR_CHECK(keys[i - 1].first != keys[i].first, "recertify: two certificates with one canonical name");
+
+  created_ = destroyed_ = 0;
+  std::vector<std::pair<Key, std::size_t>> fresh[2];  // new names: of mesh_, of S_N
+  auto it = certs_.begin();
+  for (auto& [key, i] : keys) {
+    while (it != certs_.end() && it->first < key) {
+      unqueue(it->first, it->second);
+      it = certs_.erase(it);
+      ++destroyed_;
+    }
+    if (it != certs_.end() && it->first == key) {
+      ++it;
+      continue;
+    }
+    fresh[i >= n_mesh].push_back({key, i});
+  }
+  while (it != certs_.end()) {
+    unqueue(it->first, it->second);
+    it = certs_.erase(it);
+    ++destroyed_;
+  }
+  for (int sn = 0; sn < 2; ++sn) {  // the new certificates, built together (shared moving points)
+    std::vector<CertificateSpec> todo;
+    for (auto& [key, i] : fresh[sn]) todo.push_back(specs[i]);
+    auto built = build_certificates(sn ? sn_mesh_ : mesh_, todo, now());
+    const std::vector<int>& cv = sn ? cv_sn_ : cv_;
+    for (std::size_t f = 0; f < todo.size(); ++f) {
+      const Key& key = fresh[sn][f].first;
+      Kept k{std::move(built[f]), cv[todo[f].a], cv[todo[f].b], sn == 1, std::nullopt, now(), now()};
+      if (k.cert.value.degree() > 0) pending_.insert({now(), key});
+      certs_.emplace(key, std::move(k));
+      ++created_;
+    }
+  }
+  witness_.clear();
+  for (auto& [key, k] : certs_)
+    if (std::get<0>(key) == Certificate::BallNotEmpty)
+      witness_[{std::get<2>(key), std::get<3>(key), std::get<1>(key)}] = std::get<4>(key);
+}
+
+void KineticMesh::unqueue(const Key& key, const Kept& k) {
+  if (k.cert.value.degree() <= 0) return;
+  if (k.fail) queue_.erase({*k.fail, key});
+  else pending_.erase({k.searched_to, key});
+}
+
+// The window [now, to) is searched in pieces: a certificate with no failure in [searched_from,
+// searched_to) (searched_from ≤ now) is searched on from max(now, searched_to) only, 16 lattice
+// steps (or up to T) at a time, so that a short-lived certificate costs no far-ahead isolation.
+void KineticMesh::isolate(const Key& key, Kept& k, const Dyadic& T) {
+  Dyadic from = !k.fail && k.searched_to > now() ? k.searched_to : now();
+  if (k.fail || k.searched_to < now()) k.searched_from = now();
+  Dyadic to = std::max(T, from + Dyadic(16) * Dyadic(1, -bits_));
+  poly::LatticeRootSolver s(k.cert.value, bits_);
+  k.fail = s.next_failure_after(from, to);
+  k.searched_to = to;
+  if (k.fail) queue_.insert({*k.fail, key});
+  else pending_.insert({to, key});
+}
+
+// The first lattice interval (counted from now) before T in which a kept certificate changes sign,
+// and every kept certificate failing there. Roots are isolated only for the certificates whose
+// cached answer does not cover [now, T): new ones, and those whose failure is behind now.
+std::optional<std::pair<exact::Integer, std::vector<const KineticMesh::Kept*>>> KineticMesh::next_failures(
+    const Dyadic& T) {
+  std::optional<exact::Integer> best;
+  std::vector<const Kept*> failed;
+  const Dyadic start = now().shifted(bits_);
+  if (!start.is_integer()) {  // now is not a lattice point: the lattice is taken from now, no cache
+    for (auto& [key, k] : certs_) {
+      if (k.cert.value.degree() <= 0) continue;
+      poly::LatticeRootSolver s(shifted_by_dyadic(k.cert.value, now()), bits_);
+      auto f = s.next_failure_after(Dyadic(0), T - now());
+      if (!f || (best && *f > *best)) continue;
+      if (!best || *f < *best) best = f, failed.clear();
+      failed.push_back(&k);
+    }
+    if (!best) return std::nullopt;
+    return std::pair{*best, failed};
+  }
+  const exact::Integer k0 = start.mantissa() << static_cast<unsigned>(start.exponent());
+  while (!queue_.empty() && queue_.begin()->first < k0) {
+    Key key = queue_.begin()->second;
+    queue_.erase(queue_.begin());
+    isolate(key, certs_.at(key), T);
+  }
+  while (!pending_.empty() && pending_.begin()->first < T) {
+    Key key = pending_.begin()->second;
+    pending_.erase(pending_.begin());
+    isolate(key, certs_.at(key), T);
+  }
+  if (queue_.empty() || !(Dyadic(queue_.begin()->first, -bits_) < T)) return std::nullopt;
+  const exact::Integer K = queue_.begin()->first;
+  for (auto it = queue_.begin(); it != queue_.end() && it->first == K; ++it) failed.push_back(&certs_.at(it->second));
+  return std::pair{K - k0, failed};
+}
+
+std::vector<Certificate> KineticMesh::current_certificates() const {
+  std::vector<int> sn_id_of(interned_.size(), -1);
+  for (std::size_t v = 0; v < cv_sn_.size(); ++v) sn_id_of[cv_sn_[v]] = static_cast<int>(v);
+  std::vector<Certificate> out;
+  for (auto& [key, k] : certs_) {
+    const std::vector<int>& id = k.input_spanner ? sn_id_of : mesh_id_of_;
+    Certificate c = k.cert;
+    c.value = shifted_by_dyadic(k.cert.value, now());
+    c.a = id[k.end_a];
+    c.b = id[k.end_b];
+    if (c.kind == Certificate::Delaunay) {  // named as certificates(mesh()) names it
+      std::array<int, 3> t{id[std::get<2>(key)], id[std::get<3>(key)], id[std::get<4>(key)]};
+      if (std::get<1>(key) == 0) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+      else if (t[0] > t[1]) std::swap(t[0], t[1]);
+      c.a = t[0];
+      c.b = t[1];
+    }
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+std::vector<Certificate> KineticMesh::recomputed_certificates() const {
+  std::vector<Certificate> out = certificates(mesh_);
+  for (auto& c : certificates(sn_mesh_))
+    if (c.kind != Certificate::Delaunay) out.push_back(std::move(c));
+  return out;
 }
 
 void KineticMesh::refresh(const std::string& what, std::size_t events, std::size_t moved) {
-  auto before = steiner_positions(mesh_time_ == now() ? mesh_ : moved_to(mesh_, now() - mesh_time_));
+  auto before = steiner_positions(mesh_, now() - mesh_time_);
   recertify();
-  auto after = steiner_positions(mesh_);
+  auto after = steiner_positions(mesh_, Dyadic(0));
   std::size_t kept = 0;
   for (auto& p : before) kept += after.count(p);
   Batch b{now(), events, what, mesh_.size(), kept, before.size()};
   if (moved > 0) b.ops = upd_.last().ops, b.affected = upd_.last().affected;
   b.moved = moved;
+  b.certs_created = created_;
+  b.certs_destroyed = destroyed_;
   batches_.push_back(b);
 }
 
 void KineticMesh::run_until(const Dyadic& T, const std::function<void(const Batch&)>& after) {
   KMR_CHECK(T >= now(), "run_until: time runs backwards");
   while (now() < T) {
-    auto nb = next_batch(certs_, bits_, Dyadic(0), T - now());
+    auto nb = next_failures(T);
     if (!nb) {
       upd_.advance_to(T);  // no certificate fails: the same mesh, moved
       recertify();
       break;
     }
-    auto& [k, failed] = *nb;
-    // The nuclei of the vertices of the failed certificates (input ids of mesh_ or of S_N's mesh,
-    // which share the canonical input numbering). Delaunay failures change no vertex of M.
+    // The nuclei of the vertices of the failed certificates (ids of mesh_; an end of an S_N
+    // certificate is an input vertex, its own nucleus). Delaunay failures change no vertex of M.
     std::set<int> nuclei;
-    for (std::size_t i : failed) {
-      const Certificate& c = certs_[i];
-      if (c.kind == Certificate::Delaunay) continue;
-      if (i < mesh_certs_) {
-        nuclei.insert(mesh_.info[c.a].nucleus);
-        nuclei.insert(mesh_.info[c.b].nucleus);
-      } else {
-        nuclei.insert(c.a);
-        nuclei.insert(c.b);
-      }
+    auto& [k, failed] = *nb;
+    for (const Kept* f : failed) {
+      const Kept& c = *f;
+      if (c.cert.kind == Certificate::Delaunay) continue;
+      nuclei.insert(mesh_.info[mesh_id_of_[c.end_a]].nucleus);
+      nuclei.insert(mesh_.info[mesh_id_of_[c.end_b]].nucleus);
     }
     std::vector<InputPoint> moved;
     for (int v : nuclei) moved.push_back(mesh_.input[v]);
