@@ -246,6 +246,28 @@ FailureFilterResult filtered_next_failure(const MachinePolynomial& p, int bits, 
   }
 }
 
+bool no_failure_from_zero(const MachinePolynomial& p) {
+  const __int128 c0 = p[0];
+  if (c0 == 0) return false;  // a root at 0: sign_before(0) may differ from the sign after it
+  for (int i = 1; i <= p.degree(); ++i)
+    if (p[i] != 0 && (p[i] < 0) != (c0 < 0)) return false;  // a sign change: Descartes allows a root
+  return true;
+}
+
+bool no_root_between(const MachinePolynomial& p, int bits, std::int64_t a, std::int64_t w) {
+  check_query(bits, a, w);
+  KMR_CHECK(a <= w, "no_root_between: empty range");
+  if (p.degree() < 0) return false;
+  const auto approx = p.approximations();  // round to nearest: inside the one-ulp widening
+  Coefficients c{};
+  for (int i = 0; i <= p.degree(); ++i) c[static_cast<std::size_t>(i)] = widened(approx[static_cast<std::size_t>(i)], approx[static_cast<std::size_t>(i)]);
+  const double inv_scale = inv_pow2(bits);
+  // [aδ, wδ] enclosed as in Filter::run: double(k) rounds to nearest, the widening covers it.
+  const Iv x = widened(double(a) * inv_scale, double(w) * inv_scale);
+  const Iv y = p.degree() == 3 ? horner<3>(c, 3, x) : horner<-1>(c, p.degree(), x);
+  return sign_of(y) != 0;
+}
+
 int sign_before_lattice(const MachinePolynomial& p, std::int64_t k, int bits) {
   KMR_CHECK(!p.is_zero(), "sign_before of the zero polynomial");
   const auto approx = p.approximations();

@@ -40,6 +40,17 @@ FailureFilterResult filtered_next_failure(const Polynomial& p, const DoubleCoeff
 // would be allowed to answer: nothing, or LatticeRootSolver's answer.
 FailureFilterResult filtered_next_failure(const MachinePolynomial& p, int bits, std::int64_t a, std::int64_t b);
 
+// Cheap first tests (issue 8/9, lazy isolation): each answers true only when p provably has no
+// failure interval in the stated range, and false whenever it cannot tell (never a wrong "no").
+//  * no_failure_from_zero(p): p(0) ≠ 0 and the nonzero coefficients all have p(0)'s sign
+//    (Descartes: no root in [0, ∞)), so sign_before(p, kδ) is the same for every k ≥ 0: no failure
+//    interval k ≥ 0 on any lattice. Exact (integer signs).
+//  * no_root_between(p, bits, a, w): the interval Horner enclosure of p over [aδ, wδ] (the
+//    filter's own outward rounding) excludes 0, so sign_before(p, kδ) = sign p(aδ) for a ≤ k ≤ w:
+//    no failure interval in [a, w). Needs |a|, |w| < 2^62, a ≤ w.
+bool no_failure_from_zero(const MachinePolynomial& p);
+bool no_root_between(const MachinePolynomial& p, int bits, std::int64_t a, std::int64_t w);
+
 // sign_before(p, kδ) exactly: a double evaluation with filtered_sign_at's bound where p(kδ) ≠ 0
 // is certain, else poly::sign_before on p.to_polynomial() (|k| < 2^62, 0 ≤ bits ≤ 62).
 int sign_before_lattice(const MachinePolynomial& p, std::int64_t k, int bits);
