@@ -218,7 +218,7 @@ void MotionSimulator::schedule(Record& r, CertificateId id) {
       r.scheduled = true;
     }
   } else if (r.cubic) {
-    schedule_cubic(r, id, now_k_);
+    schedule_cubic(r, id, now_k_, false);
     return;  // schedule_cubic pushed the queue entry
   } else {
     Certificate& c = *r.exact;
@@ -251,35 +251,28 @@ void MotionSimulator::schedule(Record& r, CertificateId id) {
   }
 }
 
-namespace {
-// The end of a cubic's lazy window from lattice index `from`: max(1, from·δ) time units later
-// (one unit = 2^bits intervals), so a long-lived certificate meets O(log(horizon)) checkpoints.
-std::int64_t lazy_window_end(std::int64_t from, int bits, std::int64_t last) {
-  const std::int64_t unit = std::int64_t{1} << bits;
-  const std::int64_t len = std::max(unit, from);
-  return len >= last - from ? last : from + len;
-}
-}  // namespace
-
-void MotionSimulator::schedule_cubic(Record& r, CertificateId id, std::int64_t from) {
+void MotionSimulator::schedule_cubic(Record& r, CertificateId id, std::int64_t from, bool at_checkpoint) {
   r.scheduled = false;
   r.checkpoint = false;
   if (r.exact) r.exact->failure.reset();
-  // Descartes: no root in [0, ∞) ⊇ [now, ∞): no failure, nothing to schedule (from ≥ now ≥ 0).
-  if (poly::no_failure_from_zero(r.mp)) {
-    ++counters_.lazy_no_root;
-    return;
-  }
-  // No root in [from·δ, w·δ]: no failure in [from, w); a checkpoint at w (none at the horizon).
-  const std::int64_t w = lazy_window_end(from, bits_, last_k_);
-  if (from < w && poly::no_root_between(r.mp, bits_, from, w)) {
-    ++counters_.lazy_deferred;
-    if (w < last_k_) {
-      r.checkpoint = true;
-      r.failure = w;
-      lattice_queue_.push(w, id);
+  // One window per certificate (a reached checkpoint searches at once: measured, a second window
+  // costs more on long runs than it saves — spec/hull.md "Lazy isolation").
+  if (!at_checkpoint) {
+    // Descartes: no root in [0, ∞) ⊇ [now, ∞): no failure, nothing to schedule (from ≥ now ≥ 0).
+    if (poly::no_failure_from_zero(r.mp)) {
+      ++counters_.lazy_no_root;
+      return;
     }
-    return;
+    // No root in [from·δ, w·δ]: no failure in [from, w); a checkpoint at w (none at the horizon).
+    if (const std::int64_t w = poly::root_free_until(r.mp, bits_, from, last_k_); w > from) {
+      ++counters_.lazy_deferred;
+      if (w < last_k_) {
+        r.checkpoint = true;
+        r.failure = w;
+        lattice_queue_.push(w, id);
+      }
+      return;
+    }
   }
   poly::FailureFilterResult f = poly::filtered_next_failure(r.mp, bits_, from, last_k_);
   if (!f.decided) {
@@ -380,7 +373,7 @@ std::optional<std::vector<CertificateId>> MotionSimulator::next_batch(const Dyad
           }
           ++counters_.lazy_checkpoints_reached;
           resolved = true;
-          schedule_cubic(r, id, *k);
+          schedule_cubic(r, id, *k, true);
         }
         if (!resolved) break;
       }

@@ -25,10 +25,11 @@
 //    The queue is lattice_queue.hpp (buckets for the next 1024 lattice intervals, a heap beyond,
 //    lazy deletion); no GMP number is allocated per event on the fast path.
 //  * Lazy isolation (machine cubics, issue 8/9) changes no decision either: a cubic with no root in
-//    [0, ∞) (Descartes' rule on its exact coefficients) is never scheduled; one whose enclosure over
-//    [now, w] excludes 0 (w = now + max(1, now) time units, capped at the horizon) gets a checkpoint
-//    entry at w instead of its failure interval. next_batch resolves every checkpoint at the
-//    earliest interval k before popping k (its failure is then searched from k on), so each batch
+//    [0, ∞) (Descartes' rule on its exact coefficients) is never scheduled; one proved root-free on
+//    [now, w] (poly::root_free_until: |p(now)| above a majorant of its change, w a power-of-two
+//    window guessed from the exponents, capped at the horizon) gets a checkpoint entry at w instead
+//    of its failure interval. next_batch resolves every checkpoint at the earliest interval k
+//    before popping k (its failure is then searched from k on by the filter), so each batch
 //    is exactly the set of certificates whose first failure is k; certificate() and
 //    next_failure_interval() report the exact failure of a checkpointed record.
 #include <cstdint>
@@ -148,9 +149,9 @@ class MotionSimulator {
   const Record& record(CertificateId id) const;
   void schedule(Record& r, CertificateId id);
   void schedule_exact(Record& r, CertificateId id);  // the exact record's failure interval
-  // A cubic record's first failure interval ≥ from (no failure in [now, from) is known), or a
-  // checkpoint before which it has none.
-  void schedule_cubic(Record& r, CertificateId id, std::int64_t from);
+  // A cubic record's first failure interval ≥ from (no failure in [now, from) is known), or (not
+  // at a checkpoint) a checkpoint before which it has none.
+  void schedule_cubic(Record& r, CertificateId id, std::int64_t from, bool at_checkpoint);
   std::optional<Integer> cubic_failure_uncounted(const Record& r) const;  // its failure, exactly
   Certificate& exact_of(Record& r);                  // a cubic record's exact Certificate, built once
   int machine_sign_before(const Record& r, std::int64_t k);  // exact sign just before kδ

@@ -45,11 +45,15 @@ FailureFilterResult filtered_next_failure(const MachinePolynomial& p, int bits, 
 //  * no_failure_from_zero(p): p(0) ≠ 0 and the nonzero coefficients all have p(0)'s sign
 //    (Descartes: no root in [0, ∞)), so sign_before(p, kδ) is the same for every k ≥ 0: no failure
 //    interval k ≥ 0 on any lattice. Exact (integer signs).
-//  * no_root_between(p, bits, a, w): the interval Horner enclosure of p over [aδ, wδ] (the
-//    filter's own outward rounding) excludes 0, so sign_before(p, kδ) = sign p(aδ) for a ≤ k ≤ w:
-//    no failure interval in [a, w). Needs |a|, |w| < 2^62, a ≤ w.
+//  * root_free_until(p, bits, from, last) = w ∈ [from, last]: p has no root in [from·δ, w·δ], so
+//    sign_before(p, kδ) = sign p(from·δ) for from ≤ k ≤ w and no failure interval lies in
+//    [from, w). w > from needs p(from·δ) ≠ 0 with |p(A)| (a double value and filtered_sign_at's
+//    bound) above Σ_{i≥1} U_i·D^i, where U_i majorizes the i-th Taylor coefficient at A = from·δ
+//    and D = (w − from)·δ; D is a power of two (in lattice intervals) guessed from the exponents
+//    of |p(A)| and U_i, or the rest of the horizon. w = from: nothing proven. Needs
+//    0 ≤ from ≤ last < 2^62 (from ≥ 2^53 proves nothing).
 bool no_failure_from_zero(const MachinePolynomial& p);
-bool no_root_between(const MachinePolynomial& p, int bits, std::int64_t a, std::int64_t w);
+std::int64_t root_free_until(const MachinePolynomial& p, int bits, std::int64_t from, std::int64_t last);
 
 // sign_before(p, kδ) exactly: a double evaluation with filtered_sign_at's bound where p(kδ) ≠ 0
 // is certain, else poly::sign_before on p.to_polynomial() (|k| < 2^62, 0 ≤ bits ≤ 62).
