@@ -317,6 +317,7 @@ std::int64_t root_free_until(const MachinePolynomial& p, int bits, std::int64_t 
 
 int sign_before_lattice(const MachinePolynomial& p, std::int64_t k, int bits) {
   KMR_CHECK(!p.is_zero(), "sign_before of the zero polynomial");
+  if (k == 0 && p[0] != 0) return p[0] > 0 ? 1 : -1;  // p(0) = c_0 ≠ 0: its sign, exactly (the initial run)
   const auto approx = p.approximations();
   const double inv_scale = inv_pow2(bits);
   if (int s = p.degree() == 3 ? double_sign_at<3>(approx.data(), 3, k, inv_scale) : double_sign_at(approx.data(), p.degree(), k, inv_scale); s != 0)

@@ -165,7 +165,7 @@ TEST(MachinePolynomial, FilterAndSignsDecideAsTheExactPath) {
     } else {
       ++undecided;
     }
-    for (std::int64_t k : {a, b, a + (b - a) / 2}) ASSERT_EQ(sign_before_lattice(p, k, bits), sign_before(P, Dyadic(Integer(k), -bits)));
+    for (std::int64_t k : {a, b, a + (b - a) / 2, std::int64_t{0}}) ASSERT_EQ(sign_before_lattice(p, k, bits), sign_before(P, Dyadic(Integer(k), -bits)));
   }
   EXPECT_GT(decided, 10 * undecided) << decided << " decided, " << undecided << " undecided";
 }
