@@ -93,6 +93,9 @@ int main(int argc, char** argv) {
               << ", \"events\": " << c.events << ", \"batches\": " << batches << ", \"max_batch\": " << c.max_batch
               << ", \"propagation_seconds\": " << propagation << ", \"seconds_per_event\": " << propagation / std::max<long long>(1, c.events)
               << ", \"checks\": " << checks << ", \"check_failures\": " << failures << ", \"check_seconds\": " << checking
+              << ", \"now\": " << sim.now().to_decimal() << ", \"filter_searches\": " << c.poly_filter_decided
+              << ", \"filter_fallbacks\": " << c.poly_filter_fallbacks << ", \"lazy_no_root\": " << c.lazy_no_root
+              << ", \"lazy_deferred\": " << c.lazy_deferred << ", \"lazy_checkpoints_reached\": " << c.lazy_checkpoints_reached
               << ", \"live_certificates\": " << kh.live_certificates() << ", \"certificates_created\": " << kh.counters().certificates_created
               << "}" << std::endl;
     if (failures) return 1;

@@ -112,7 +112,9 @@ int simulate_hull_command(const Argv& argv) {
           << ", \"trace_nodes\": " << s.trace_nodes << ", \"reads_reexecuted\": " << s.reads_reexecuted
           << ", \"allocs_reused\": " << s.allocs_reused << ", \"nodes_discarded\": " << s.nodes_discarded
           << ", \"hooks_run\": " << s.hooks_run << ", \"exact_certificates\": " << c.exact_certificates
-          << ", \"sturm_queries\": " << c.sturm_queries << "}\n";
+          << ", \"sturm_queries\": " << c.sturm_queries << ", \"filter_searches\": " << c.poly_filter_decided
+          << ", \"filter_fallbacks\": " << c.poly_filter_fallbacks << ", \"lazy_no_root\": " << c.lazy_no_root
+          << ", \"lazy_deferred\": " << c.lazy_deferred << ", \"lazy_checkpoints_reached\": " << c.lazy_checkpoints_reached << "}\n";
   }
   return 0;
 }

@@ -120,13 +120,14 @@ CertificateId MotionSimulator::add_linear(std::int64_t c0, std::int64_t c1) {
 
 void MotionSimulator::remove(CertificateId id) {
   Record& r = record(id);
-  if (r.scheduled) {
+  if (r.scheduled || r.checkpoint) {
     if (small_lattice_)
       ++stale_entries_;  // its queue entry is skipped when it surfaces
     else
       queue_.erase({r.exact->failure.value(), id});
   }
   r.scheduled = false;
+  r.checkpoint = false;
   r.pending = false;
   r.exact.reset();
   free_slots_.push_back(slot_of_id_[id]);
@@ -140,8 +141,7 @@ const Certificate& MotionSimulator::certificate(CertificateId id) const {
   const Record& r = record(id);
   if (r.cubic) {  // a view with the exact polynomial (off the hot path)
     Polynomial p = r.mp.to_polynomial();
-    std::optional<Integer> failure;
-    if (r.scheduled) failure = Integer(r.failure);
+    std::optional<Integer> failure = cubic_failure_uncounted(r);
     poly::LatticeRootSolver solver(p, bits_);
     views_.insert_or_assign(id, Certificate{std::move(p), std::move(solver), r.outcome, std::move(failure)});
     return views_.at(id);
@@ -218,23 +218,8 @@ void MotionSimulator::schedule(Record& r, CertificateId id) {
       r.scheduled = true;
     }
   } else if (r.cubic) {
-    poly::FailureFilterResult f = poly::filtered_next_failure(r.mp, bits_, now_k_, last_k_);
-    if (f.decided) {
-      ++counters_.poly_filter_decided;
-      if (f.failure) {
-        r.failure = *f.failure;
-        r.scheduled = true;
-      }
-      if (r.exact) {
-        r.exact->failure.reset();
-        if (f.failure) r.exact->failure = Integer(*f.failure);
-      }
-    } else {
-      ++counters_.poly_filter_fallbacks;
-      exact_of(r);
-      schedule_exact(r, id);
-      return;  // schedule_exact pushed the queue entry
-    }
+    schedule_cubic(r, id, now_k_, false);
+    return;  // schedule_cubic pushed the queue entry
   } else {
     Certificate& c = *r.exact;
     bool decided = false;
@@ -266,6 +251,54 @@ void MotionSimulator::schedule(Record& r, CertificateId id) {
   }
 }
 
+void MotionSimulator::schedule_cubic(Record& r, CertificateId id, std::int64_t from, bool at_checkpoint) {
+  r.scheduled = false;
+  r.checkpoint = false;
+  if (r.exact) r.exact->failure.reset();
+  // One window per certificate (a reached checkpoint searches at once: measured, a second window
+  // costs more on long runs than it saves — spec/hull.md "Lazy isolation").
+  if (!at_checkpoint) {
+    // Descartes: no root in [0, ∞) ⊇ [now, ∞): no failure, nothing to schedule (from ≥ now ≥ 0).
+    if (poly::no_failure_from_zero(r.mp)) {
+      ++counters_.lazy_no_root;
+      return;
+    }
+    // No root in [from·δ, w·δ]: no failure in [from, w); a checkpoint at w (none at the horizon).
+    if (const std::int64_t w = poly::root_free_until(r.mp, bits_, from, last_k_); w > from) {
+      ++counters_.lazy_deferred;
+      if (w < last_k_) {
+        r.checkpoint = true;
+        r.failure = w;
+        lattice_queue_.push(w, id);
+      }
+      return;
+    }
+  }
+  poly::FailureFilterResult f = poly::filtered_next_failure(r.mp, bits_, from, last_k_);
+  if (!f.decided) {
+    ++counters_.poly_filter_fallbacks;
+    exact_of(r);
+    schedule_exact(r, id);  // from now: the same first failure (none in [now, from))
+    return;
+  }
+  ++counters_.poly_filter_decided;
+  if (f.failure) {
+    r.failure = *f.failure;
+    r.scheduled = true;
+    if (r.exact) r.exact->failure = Integer(*f.failure);
+    lattice_queue_.push(r.failure, id);
+  }
+}
+
+std::optional<Integer> MotionSimulator::cubic_failure_uncounted(const Record& r) const {
+  if (!r.checkpoint) {
+    if (r.scheduled) return Integer(r.failure);
+    return std::nullopt;
+  }
+  poly::LatticeRootSolver solver(r.mp.to_polynomial(), bits_);  // off the hot path: exact
+  return solver.next_failure_after(now_, lattice_point(last_k_big_));
+}
+
 void MotionSimulator::schedule_exact(Record& r, CertificateId id) {
   Certificate& c = *r.exact;
   long long before = c.solver.sturm_queries;
@@ -282,7 +315,7 @@ void MotionSimulator::schedule_exact(Record& r, CertificateId id) {
 bool MotionSimulator::entry_live(const Entry& e) const {
   if (e.id >= slot_of_id_.size() || slot_of_id_[e.id] == kNoRecord) return false;
   const Record& r = records_[slot_of_id_[e.id]];
-  return r.scheduled && r.failure == e.k;  // a record is scheduled at most once per interval
+  return (r.scheduled || r.checkpoint) && r.failure == e.k;  // a record is queued at most once per interval
 }
 
 void MotionSimulator::compact_queue() {
@@ -301,10 +334,17 @@ std::optional<Integer> MotionSimulator::next_failure_interval() const {
   for (CertificateId id : pending_)
     if (slot_of_id_[id] != kNoRecord && records_[slot_of_id_[id]].pending)
       if (auto k = machine_failure_uncounted(records_[slot_of_id_[id]]); k && (!best || *k < *best)) best = k;
-  if (auto k = lattice_queue_.earliest_unchanged([&](const Entry& e) { return entry_live(e); }); k && (!best || *k < *best))
+  // Scheduled failures from the queue; checkpointed cubics' failures computed exactly (a scan of
+  // the records: off the hot path).
+  if (auto k = lattice_queue_.earliest_unchanged([&](const Entry& e) { return entry_live(e) && !records_[slot_of_id_[e.id]].checkpoint; });
+      k && (!best || *k < *best))
     best = k;
-  if (!best) return std::nullopt;
-  return Integer(*best);
+  std::optional<Integer> result;
+  if (best) result = Integer(*best);
+  for (const Record& r : records_)
+    if (r.checkpoint)
+      if (auto k = cubic_failure_uncounted(r); k && (!result || *k < *result)) result = k;
+  return result;
 }
 
 std::optional<std::vector<CertificateId>> MotionSimulator::next_batch(const Dyadic& until) {
@@ -312,11 +352,34 @@ std::optional<std::vector<CertificateId>> MotionSimulator::next_batch(const Dyad
   flush_pending();
   if (small_lattice_) {
     auto live = [&](const Entry& e) { return entry_live(e); };
-    auto k = lattice_queue_.earliest(live);
-    if (!k) return std::nullopt;
-    // (k+1)δ > until ⇔ k + 1 > floor(until·2^b): compared as Integers once per batch.
-    if (Integer(*k) + 1 > until.shifted(bits_).floor()) return std::nullopt;
-    lattice_queue_.pop_interval(*k, live, batch);
+    std::optional<std::int64_t> k;
+    for (;;) {
+      k = lattice_queue_.earliest(live);
+      if (!k) return std::nullopt;
+      // (k+1)δ > until ⇔ k + 1 > floor(until·2^b): compared as Integers once per interval. A
+      // checkpoint's failure is ≥ k, so none lies before until either.
+      if (Integer(*k) + 1 > until.shifted(bits_).floor()) return std::nullopt;
+      // Pop interval k; the checkpoints among it look for their failure from k on (pushing it, or
+      // a later checkpoint); those failing in k itself are popped by the next round.
+      for (;;) {
+        std::vector<CertificateId> popped;
+        lattice_queue_.pop_interval(*k, live, popped);
+        bool resolved = false;
+        for (CertificateId id : popped) {
+          Record& r = record(id);
+          if (!r.checkpoint) {
+            batch.push_back(id);
+            continue;
+          }
+          ++counters_.lazy_checkpoints_reached;
+          resolved = true;
+          schedule_cubic(r, id, *k, true);
+        }
+        if (!resolved) break;
+      }
+      if (!batch.empty()) break;  // else: only checkpoints were at k
+    }
+    std::sort(batch.begin(), batch.end());
     now_k_ = *k + 1;
     lattice_queue_.advance(now_k_);
     now_ = lattice_point(Integer(now_k_));

@@ -24,6 +24,14 @@
 //    just before lattice points go through filtered_sign_at first (exact fallback).
 //    The queue is lattice_queue.hpp (buckets for the next 1024 lattice intervals, a heap beyond,
 //    lazy deletion); no GMP number is allocated per event on the fast path.
+//  * Lazy isolation (machine cubics, issue 8/9) changes no decision either: a cubic with no root in
+//    [0, ∞) (Descartes' rule on its exact coefficients) is never scheduled; one proved root-free on
+//    [now, w] (poly::root_free_until: |p(now)| above a majorant of its change, w a power-of-two
+//    window guessed from the exponents, capped at the horizon) gets a checkpoint entry at w instead
+//    of its failure interval. next_batch resolves every checkpoint at the earliest interval k
+//    before popping k (its failure is then searched from k on by the filter), so each batch
+//    is exactly the set of certificates whose first failure is k; certificate() and
+//    next_failure_interval() report the exact failure of a checkpointed record.
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -69,6 +77,11 @@ struct SimulatorCounters {
   // Certificates added in machine form (add(MachinePolynomial)), and those of them that needed
   // their exact Polynomial (a filter fallback or a certificate() view).
   long long machine_polynomials = 0, machine_polynomials_exact = 0;
+  // Lazy isolation of machine cubics (issue 8/9): failure intervals settled without the filter's
+  // search — no root in [0, ∞) by Descartes' rule (never scheduled), or no root up to a checkpoint
+  // (a queue entry that re-examines the certificate when the simulation reaches it) — and the
+  // checkpoints reached.
+  long long lazy_no_root = 0, lazy_deferred = 0, lazy_checkpoints_reached = 0;
 };
 
 struct SimulatorOptions {
@@ -122,6 +135,8 @@ class MotionSimulator {
     bool cubic = false;                // a MachinePolynomial record (small lattice only)
     poly::MachinePolynomial mp;
     bool pending = false;              // popped machine record whose rescheduling is deferred
+    bool checkpoint = false;           // a cubic record whose queue entry at `failure` is a checkpoint:
+                                       // no failure before it (proved), none looked for after it
     int outcome = 0;
     std::unique_ptr<Certificate> exact;
     poly::DoubleCoefficients approx;  // of exact->polynomial, for the failure filter
@@ -134,6 +149,10 @@ class MotionSimulator {
   const Record& record(CertificateId id) const;
   void schedule(Record& r, CertificateId id);
   void schedule_exact(Record& r, CertificateId id);  // the exact record's failure interval
+  // A cubic record's first failure interval ≥ from (no failure in [now, from) is known), or (not
+  // at a checkpoint) a checkpoint before which it has none.
+  void schedule_cubic(Record& r, CertificateId id, std::int64_t from, bool at_checkpoint);
+  std::optional<Integer> cubic_failure_uncounted(const Record& r) const;  // its failure, exactly
   Certificate& exact_of(Record& r);                  // a cubic record's exact Certificate, built once
   int machine_sign_before(const Record& r, std::int64_t k);  // exact sign just before kδ
   std::optional<std::int64_t> machine_failure(const Record& r);     // interval in [now, last), counted

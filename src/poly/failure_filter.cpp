@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -246,8 +247,77 @@ FailureFilterResult filtered_next_failure(const MachinePolynomial& p, int bits, 
   }
 }
 
+bool no_failure_from_zero(const MachinePolynomial& p) {
+  const __int128 c0 = p[0];
+  if (c0 == 0) return false;  // a root at 0: sign_before(0) may differ from the sign after it
+  for (int i = 1; i <= p.degree(); ++i)
+    if (p[i] != 0 && (p[i] < 0) != (c0 < 0)) return false;  // a sign change: Descartes allows a root
+  return true;
+}
+
+namespace {
+// ⌊log2 v⌋ of a positive normal double.
+int floor_log2(double v) { return static_cast<int>((std::bit_cast<std::uint64_t>(v) >> 52) & 0x7ff) - 1023; }
+}  // namespace
+
+std::int64_t root_free_until(const MachinePolynomial& p, int bits, std::int64_t from, std::int64_t last) {
+  check_query(bits, from, last);
+  KMR_CHECK(from <= last, "root_free_until: empty range");
+  const int n = p.degree();
+  if (n < 0 || from == last) return from;
+  if (n == 0) return last;  // a nonzero constant has no root
+  constexpr std::int64_t kExact = std::int64_t{1} << 53;
+  if (from < 0 || from >= kExact) return from;  // A = from·δ below must be exact and ≥ 0
+  const auto c = p.approximations();  // |c_i − c̃_i| ≤ 2^−53·|c_i|
+  const double inv_scale = inv_pow2(bits);
+  const double A = double(from) * inv_scale;  // exact
+  // |p(A)| ≥ lo: the double value with filtered_sign_at's rigorous bound (as double_sign_at).
+  double y = c[static_cast<std::size_t>(n)], bound = std::fabs(y);
+  for (int i = n - 1; i >= 0; --i) {
+    y = y * A + c[static_cast<std::size_t>(i)];
+    bound = bound * A + std::fabs(c[static_cast<std::size_t>(i)]);
+  }
+  const double err = (2.0 * n + 2.0) * (bound * 0x1p-51);
+  if (!(std::isfinite(y) && std::isfinite(bound) && bound >= 0x1p-900)) return from;
+  const double lo = (std::fabs(y) - err) * (1 - 0x1p-50);  // rounded down with room to spare
+  if (!(lo > 0x1p-900)) return from;                       // p(A) may be 0 (or is tiny): no window
+  // q(s) = p(A + s) = p(A) + Σ_{i≥1} q_i s^i with |q_i| ≤ U_i = Σ_{j≥i} C(j, i)|c_j| A^{j−i}
+  // (nonnegative terms: each rounding is relative; 1 + 2^−45 covers them and the coefficients').
+  const double a1 = std::fabs(c[1]), a2 = n >= 2 ? std::fabs(c[2]) : 0.0, a3 = n >= 3 ? std::fabs(c[3]) : 0.0;
+  constexpr double kUp = 1 + 0x1p-45;
+  const double U[4] = {0, (a1 + A * (2 * a2 + 3 * a3 * A)) * kUp, (a2 + 3 * a3 * A) * kUp, a3 * kUp};
+  // A guess s = 2^e with U_i s^i ≤ lo/8 for each i (exponents only); the test below decides.
+  int e = 1 << 20;
+  const int elo = floor_log2(lo);
+  for (int i = 1; i <= n; ++i) {
+    if (!(U[i] > 0)) continue;
+    if (!std::isfinite(U[i])) return from;
+    const int d = elo - floor_log2(U[i]) - 4;  // lo/(8·U_i) ≥ 2^d
+    e = std::min(e, d >= 0 ? d / i : -((-d + i - 1) / i));  // ⌊d/i⌋
+  }
+  // The window in lattice intervals: 2^(e+bits), capped at the horizon.
+  const int le = e + bits;
+  if (le < 0) return from;
+  std::int64_t len = le >= 61 ? last - from : std::min<std::int64_t>(std::int64_t{1} << le, last - from);
+  if (len >= kExact) return from;  // keeps D exact
+  // Σ U_i D^i (nonnegative terms, rounded up by the factor) < |p(A)|: no root in [A, A + D].
+  auto root_free = [&](std::int64_t l) {
+    const double D = double(l) * inv_scale;  // exact (l < 2^53)
+    return ((U[3] * D + U[2]) * D + U[1]) * D * (1 + 0x1p-48) < lo;
+  };
+  if (!root_free(len)) return from;
+  // The guess is cautious (each term ≤ lo/8): double the window while the test still holds.
+  for (int i = 0; i < 4 && len < last - from && len < kExact / 2; ++i) {
+    const std::int64_t longer = std::min(2 * len, last - from);
+    if (!root_free(longer)) break;
+    len = longer;
+  }
+  return from + len;
+}
+
 int sign_before_lattice(const MachinePolynomial& p, std::int64_t k, int bits) {
   KMR_CHECK(!p.is_zero(), "sign_before of the zero polynomial");
+  if (k == 0 && p[0] != 0) return p[0] > 0 ? 1 : -1;  // p(0) = c_0 ≠ 0: its sign, exactly (the initial run)
   const auto approx = p.approximations();
   const double inv_scale = inv_pow2(bits);
   if (int s = p.degree() == 3 ? double_sign_at<3>(approx.data(), 3, k, inv_scale) : double_sign_at(approx.data(), p.degree(), k, inv_scale); s != 0)

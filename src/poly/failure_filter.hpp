@@ -40,6 +40,21 @@ FailureFilterResult filtered_next_failure(const Polynomial& p, const DoubleCoeff
 // would be allowed to answer: nothing, or LatticeRootSolver's answer.
 FailureFilterResult filtered_next_failure(const MachinePolynomial& p, int bits, std::int64_t a, std::int64_t b);
 
+// Cheap first tests (issue 8/9, lazy isolation): each answers true only when p provably has no
+// failure interval in the stated range, and false whenever it cannot tell (never a wrong "no").
+//  * no_failure_from_zero(p): p(0) ≠ 0 and the nonzero coefficients all have p(0)'s sign
+//    (Descartes: no root in [0, ∞)), so sign_before(p, kδ) is the same for every k ≥ 0: no failure
+//    interval k ≥ 0 on any lattice. Exact (integer signs).
+//  * root_free_until(p, bits, from, last) = w ∈ [from, last]: p has no root in [from·δ, w·δ], so
+//    sign_before(p, kδ) = sign p(from·δ) for from ≤ k ≤ w and no failure interval lies in
+//    [from, w). w > from needs p(from·δ) ≠ 0 with |p(A)| (a double value and filtered_sign_at's
+//    bound) above Σ_{i≥1} U_i·D^i, where U_i majorizes the i-th Taylor coefficient at A = from·δ
+//    and D = (w − from)·δ; D is a power of two (in lattice intervals) guessed from the exponents
+//    of |p(A)| and U_i, or the rest of the horizon. w = from: nothing proven. Needs
+//    0 ≤ from ≤ last < 2^62 (from ≥ 2^53 proves nothing).
+bool no_failure_from_zero(const MachinePolynomial& p);
+std::int64_t root_free_until(const MachinePolynomial& p, int bits, std::int64_t from, std::int64_t last);
+
 // sign_before(p, kδ) exactly: a double evaluation with filtered_sign_at's bound where p(kδ) ≠ 0
 // is certain, else poly::sign_before on p.to_polynomial() (|k| < 2^62, 0 ≤ bits ≤ 62).
 int sign_before_lattice(const MachinePolynomial& p, std::int64_t k, int bits);

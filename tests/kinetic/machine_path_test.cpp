@@ -260,3 +260,76 @@ TEST(FailureFilterPath, A2_1_CertificatesCreatedAtNowGiveTheSameBatchesOnAllThre
   EXPECT_GT(fil.counters().poly_filter_decided, 0);
   EXPECT_GT(fil.counters().poly_filter_fallbacks, 0);
 }
+
+// Lazy isolation (issue 8/9): machine cubics whose roots lie far beyond now get checkpoints, not
+// failure intervals. Against the exact path (SimulatorOptions{false}: Sturm on every certificate)
+// over a long horizon: the same batches, outcomes, views (certificate().failure) and
+// next_failure_interval(); certificates are created at every batch and removed at random, some
+// before and some after their checkpoints. Families: products of linear factors with roots spread
+// over the horizon (some on lattice points, some doubled), a complex pair, random coefficients.
+TEST(FailureFilterPath, A2_1_CheckpointedCubicsGiveTheSameBatchesAsTheExactPath) {
+  RecordProperty("claim", "A2.1-machine-filter");
+  for (int b : {0, 4, 10}) {
+    std::mt19937_64 rng(41 + static_cast<unsigned>(b));
+    auto uniform = [&](std::int64_t lo, std::int64_t hi) { return std::uniform_int_distribution<std::int64_t>(lo, hi)(rng); };
+    const std::int64_t H = std::int64_t{1} << 22;  // horizon in lattice steps
+    const Dyadic horizon(Integer(H), -b);
+    MotionSimulator mac(b, horizon), ex(b, horizon, SimulatorOptions{false});
+    std::vector<CertificateId> live;
+    std::map<CertificateId, Polynomial> polys;
+    auto add = [&](const kmr::poly::MachinePolynomial& p) {
+      CertificateId i = mac.add(p), j = ex.add(p.to_polynomial());
+      ASSERT_EQ(i, j);
+      ASSERT_EQ(mac.outcome(i), ex.outcome(i));
+      polys[i] = p.to_polynomial();
+      live.push_back(i);
+    };
+    using M = kmr::poly::MachinePolynomial;
+    auto spawn = [&](std::int64_t now_k) {
+      auto root = [&] {  // a root at (now_k + d)·δ, d spread over 2^0 … 2^22 steps, maybe off the lattice
+        std::int64_t d = uniform(0, std::int64_t{1} << uniform(0, 22));
+        std::int64_t off = uniform(0, 3) == 0 ? 0 : uniform(-3, 3);
+        return M::linear(-((now_k + d) * 8 + off), std::int64_t{8} << b);
+      };
+      switch (uniform(0, 4)) {
+        case 0: add(root() * root() * root() * M(uniform(0, 1) ? 1 : -5)); break;
+        case 1: { M r = root(); add(r * r * root()); break; }
+        case 2: add(root() * root() * M::linear(uniform(1, 1000), 1)); break;  // and a negative root
+        case 3: add(root() * (M::linear(uniform(1, 99), 0) + M::linear(0, 1) * M::linear(0, 1))); break;  // a complex pair
+        default: {
+          M p = M::linear(uniform(-(1 << 30), 1 << 30), uniform(-(1 << 20), 1 << 20)) + M::cubic_terms(uniform(-(1 << 10), 1 << 10), uniform(-4, 4));
+          if (!p.is_zero()) add(p);
+        }
+      }
+    };
+    for (int i = 0; i < 150; ++i) spawn(0);
+    long long batches = 0;
+    for (;;) {
+      auto x = mac.next_batch(horizon), z = ex.next_batch(horizon);
+      ASSERT_EQ(x.has_value(), z.has_value());
+      if (!z) break;
+      ASSERT_EQ(*x, *z) << "batch " << batches << " b " << b;
+      ASSERT_EQ(mac.now(), ex.now());
+      for (CertificateId id : *z) ASSERT_EQ(mac.outcome(id), ex.outcome(id));
+      if (batches % 25 == 0) {
+        ASSERT_EQ(mac.next_failure_interval(), ex.next_failure_interval()) << "batch " << batches;
+        for (CertificateId id : live) ASSERT_EQ(mac.certificate(id).failure, ex.certificate(id).failure) << polys[id].to_string();
+      }
+      ++batches;
+      const std::int64_t now_k = *mac.now_index();
+      if (batches < 300)  // then the remaining certificates run out (each fails at most three times)
+        for (int j = 0; j < 2; ++j) spawn(now_k);
+      for (int j = 0; j < 2 && live.size() > 150; ++j) {
+        std::size_t at = static_cast<std::size_t>(uniform(0, static_cast<std::int64_t>(live.size()) - 1));
+        mac.remove(live[at]), ex.remove(live[at]);
+        live.erase(live.begin() + static_cast<std::ptrdiff_t>(at));
+      }
+    }
+    for (CertificateId id : live) EXPECT_EQ(mac.outcome(id), ex.outcome(id));
+    EXPECT_GT(batches, 100) << "b " << b;
+    // The lazy paths must be taken: windows given, checkpoints reached and resolved.
+    EXPECT_GT(mac.counters().lazy_deferred, 100) << "b " << b;
+    EXPECT_GT(mac.counters().lazy_checkpoints_reached, 20) << "b " << b;
+    EXPECT_GT(mac.counters().lazy_no_root, 0) << "b " << b;
+  }
+}

@@ -165,9 +165,74 @@ TEST(MachinePolynomial, FilterAndSignsDecideAsTheExactPath) {
     } else {
       ++undecided;
     }
-    for (std::int64_t k : {a, b, a + (b - a) / 2}) ASSERT_EQ(sign_before_lattice(p, k, bits), sign_before(P, Dyadic(Integer(k), -bits)));
+    for (std::int64_t k : {a, b, a + (b - a) / 2, std::int64_t{0}}) ASSERT_EQ(sign_before_lattice(p, k, bits), sign_before(P, Dyadic(Integer(k), -bits)));
   }
   EXPECT_GT(decided, 10 * undecided) << decided << " decided, " << undecided << " undecided";
+}
+
+
+// The lazy tests of failure_filter.hpp (issue 8/9) against Sturm counts on the converted Polynomial:
+// root_free_until never claims a range [from·δ, w·δ] that holds a root or ends on one, and
+// no_failure_from_zero never claims a polynomial with a root in [0, ∞). Families: random
+// coefficients (40–122 bits), products of linear factors with roots at, just after and within a
+// few 2^−e of from·δ (simple and double), and the same scaled to coefficients near 2^122.
+TEST(MachinePolynomial, LazyTestsNeverClaimARootFreeRangeThatHoldsARoot) {
+  std::mt19937_64 rng(2026);
+  long long windows = 0, none = 0, descartes = 0, descartes_checked = 0;
+  for (int i = 0; i < 6000; ++i) {
+    const int bits = static_cast<int>(rng() % 16);
+    const std::int64_t from = rng() % 4 == 0 ? 0 : static_cast<std::int64_t>(rng() % (std::uint64_t{1} << (rng() % 40)));
+    M p;
+    if (i % 2 == 0) {
+      std::vector<__int128> c;
+      for (int k = 0; k < 4; ++k) c.push_back(random_value(rng, 40 + static_cast<int>(rng() % 83)));
+      p = machine(c);
+    } else {  // roots near from·δ: (2^e·t − (from·2^(e−bits) + d)), e − bits ≤ 12
+      const int factors = 1 + static_cast<int>(rng() % 3);
+      p = M(1);
+      for (int j = 0; j < factors; ++j) {
+        const int e = bits + static_cast<int>(rng() % 13);
+        const __int128 num = (static_cast<__int128>(from) << (e - bits)) + static_cast<__int128>(rng() % 9) - 2;
+        M f = M::linear(-num, static_cast<__int128>(1) << e);
+        if (!M::fits(num, 38) || p.degree() + 1 > 3) break;  // keeps every product below 2^120
+        p = p * f;
+      }
+      if (rng() % 3 == 0 && p.degree() < 3) p = p * M::linear(static_cast<__int128>(rng() % 1000) + 1, 1);  // a negative root
+      if (rng() % 4 == 0) {  // scale towards 2^122
+        __int128 top = 0;
+        for (int k = 0; k <= p.degree(); ++k) top = std::max(top, p[k] < 0 ? -p[k] : p[k]);
+        int b = 0;
+        while (b < 126 && (static_cast<__int128>(1) << b) <= top) ++b;
+        if (b < 120) p = p * M((static_cast<__int128>(1) << (120 - b)) - static_cast<__int128>(rng() % 3));
+      }
+    }
+    if (p.is_zero()) continue;
+    const Polynomial P = p.to_polynomial();
+    LatticeRootSolver exact(P, bits);
+    const std::int64_t last = from + static_cast<std::int64_t>(rng() % (std::uint64_t{1} << (1 + rng() % 40)));
+    const std::int64_t w = root_free_until(p, bits, from, last);
+    ASSERT_GE(w, from);
+    ASSERT_LE(w, last);
+    if (w > from) {
+      ++windows;
+      const Dyadic lo(Integer(from), -bits), hi(Integer(w), -bits);
+      ASSERT_EQ(exact.count_roots(lo, hi), 0) << P.to_string() << " bits " << bits << " [" << from << ", " << w << "]";
+      ASSERT_NE(P.sign_at(hi), 0) << P.to_string() << " bits " << bits << " [" << from << ", " << w << "]";
+      ASSERT_FALSE(exact.next_failure_after(lo, hi)) << P.to_string();
+    } else {
+      ++none;
+    }
+    if (no_failure_from_zero(p)) {
+      ++descartes;
+      ASSERT_NE(P.sign_at(Dyadic(0)), 0) << P.to_string();
+      ASSERT_EQ(exact.count_roots(Dyadic(0), Dyadic(Integer(1), 200)), 0) << P.to_string();  // every root is < 2^130
+    }
+    ++descartes_checked;
+  }
+  // Tests that never prove anything would pass the comparisons: both must answer often.
+  EXPECT_GT(windows, 1000) << windows << " windows, " << none << " none";
+  EXPECT_GT(none, 300);
+  EXPECT_GT(descartes, 300) << descartes << " of " << descartes_checked;
 }
 
 }  // namespace
