@@ -8,12 +8,7 @@ kmr=$1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 passed=0 failed=0
-expect_error() {  # expect_error NAME STDERR_SUBSTRING -- ARGS...
-  local name=$1 want=$2; shift 3
-  timeout 60 "$kmr" "$@" >"$tmp/out" 2>"$tmp/err"; local rc=$?
-  if [ $rc -eq 2 ] && grep -qF -- "$want" "$tmp/err" && ! grep -q 'internal error' "$tmp/err"; then passed=$((passed+1)); else
-    failed=$((failed+1)); echo "FAIL $name: rc=$rc (want 2 and '$want'), stderr:"; head -c 400 "$tmp/err"; echo; fi
-}
+source "$(dirname "$0")/expect_error.sh"  # expect_error NAME STDERR_SUBSTRING -- ARGS...
 expect_same() {  # expect_same NAME -- ARGS_A... :: ARGS_B...   (both exit 0 with equal stdout)
   local name=$1; shift 2
   local a=() b=()

@@ -10,12 +10,8 @@ kmr=$1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 passed=0 failed=0
-expect_error() {  # expect_error NAME STDERR_SUBSTRING -- ARGS...
-  local name=$1 want=$2; shift 3
-  timeout 120 "$kmr" "$@" >"$tmp/out" 2>"$tmp/err"; local rc=$?
-  if [ $rc -eq 2 ] && grep -qF -- "$want" "$tmp/err" && ! grep -q 'internal error' "$tmp/err"; then passed=$((passed+1)); else
-    failed=$((failed+1)); echo "FAIL $name: rc=$rc (want 2 and '$want'), stderr:"; head -c 400 "$tmp/err"; echo; fi
-}
+expect_timeout=120
+source "$(dirname "$0")/expect_error.sh"  # expect_error NAME STDERR_SUBSTRING -- ARGS...
 printf '0.25 0.25\n0.75 0.5\n' >"$tmp/ws"
 printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n' >"$tmp/xyz"
 : >"$tmp/file"              # a regular file: nothing can be created under it
