@@ -23,6 +23,17 @@ function(kmr_layer name)
   kmr_install_layer(kmr_${name})
 endfunction()
 
+# kmr_test_timeout(TEST SECONDS): the TIMEOUT of a test added with add_test, SECONDS times
+# KMR_TEST_TIMEOUT_SCALE when that is set (4 in coverage/run.sh and scripts/sanitize.sh), as
+# kmr_gtest does for GoogleTest binaries: -O0 --coverage and sanitizer builds run the same shell-driven
+# tests several times slower, more so on a loaded machine.
+function(kmr_test_timeout test seconds)
+  if(KMR_TEST_TIMEOUT_SCALE)
+    math(EXPR seconds "${seconds} * ${KMR_TEST_TIMEOUT_SCALE}")
+  endif()
+  set_tests_properties(${test} PROPERTIES TIMEOUT ${seconds})
+endfunction()
+
 # kmr_gtest(NAME LABEL label SOURCES... LIBS ...) -> GoogleTest binary, each test a ctest test.
 # Property tests (LABEL prop) run with a fixed RapidCheck seed so CI is reproducible;
 # override with RC_PARAMS="seed=N" to replay or explore.

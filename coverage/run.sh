@@ -16,7 +16,8 @@
 # every line.
 # Not run here: `install.find_package_consumer` (it links the installed, --coverage-instrumented
 # libraries into a consumer built without --coverage, which cannot link; it tests packaging, not src/).
-# Per-test timeouts are 4x the plain run's (KMR_TEST_TIMEOUT_SCALE): on a loaded machine slow builds
+# Per-test timeouts are 4x the plain run's (KMR_TEST_TIMEOUT_SCALE: kmr_gtest for GoogleTest binaries,
+# kmr_test_timeout for the add_test ones: CLI shell tests, audit, fuzz replay): on a loaded machine slow builds
 # take several times longer (audit.quick: 53 s at -O0 on a quiet machine, 800 s under ASan at load). ctest runs the longest tests first, from the plain build's timings when this
 # build has none yet (build/Testing/Temporary/CTestCostData.txt): ordering only, the same tests run.
 # Re-measuring after adding tests, without re-running the whole suite:
