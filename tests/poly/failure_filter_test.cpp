@@ -212,6 +212,59 @@ TEST(FailureFilter, ProductsOfNearLatticeRootsAndNearCapCoefficientsDecideAsTheE
   EXPECT_GT(t.decided, t.undecided / 4) << t.decided << " decided, " << t.undecided << " undecided";
 }
 
+// Enclosures that overflow to ±∞ (interval Horner's "whole line"): p = 2^100·(t − 3)·(t^14 + 2^854)
+// has one real root, t = 3 (t^14 + 2^854 > 0), but a complex pair of modulus 2^61, so Fujiwara's
+// bound (|c_1/c_15|^(1/14) = 2^61) does not shrink the query, and the enclosure of p over the whole
+// range [0, 2^62) (2^100·2^(62·15) = 2^1030) is the entire line. The filter must split until the
+// enclosures are finite and still find the failure at the root: sign_before(3) = −, sign_before of
+// the next lattice point = +, so interval 3·2^bits (hand-derived, and the exact path's answer).
+TEST(FailureFilter, OverflowingEnclosuresStillFindTheFailure) {
+  const Integer e100 = Integer(1) << 100, e954 = Integer(1) << 954;
+  std::vector<Integer> c(16, Integer(0));
+  c[0] = -3 * e954;  // 2^100·(−3·2^854)
+  c[1] = e954;       // 2^100·2^854
+  c[14] = -3 * e100;
+  c[15] = e100;
+  Polynomial p(c);
+  ASSERT_TRUE(p == P({-3, 1}) * Polynomial(std::vector<Integer>{Integer(1) << 854, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1}) *
+                       Polynomial(std::vector<Integer>{e100}));
+  const DoubleCoefficients approx = double_coefficients(p);
+  ASSERT_TRUE(approx.usable);
+  const std::int64_t top = (std::int64_t{1} << 62) - 1;
+  Tally t;
+  for (int bits : {0, 4, 20}) {
+    FailureFilterResult f = filtered_next_failure(p, approx, bits, 0, top);
+    ASSERT_TRUE(f.decided) << "bits " << bits;
+    ASSERT_TRUE(f.failure) << "bits " << bits;
+    EXPECT_EQ(*f.failure, std::int64_t{3} << bits) << "bits " << bits;
+    EXPECT_TRUE(same_decision(p, bits, 0, top, t));
+    // From the left of the root across negative indices (p < 0 there; the enclosure of the far left overflows too).
+    f = filtered_next_failure(p, approx, bits, -top, top);
+    ASSERT_TRUE(f.decided && f.failure) << "bits " << bits;
+    EXPECT_EQ(*f.failure, std::int64_t{3} << bits) << "bits " << bits;
+    // Past the root there is no failure; every enclosure right of 3 overflows or excludes 0.
+    f = filtered_next_failure(p, approx, bits, std::int64_t{4} << bits, top);
+    if (f.decided) EXPECT_FALSE(f.failure) << "bits " << bits;
+  }
+}
+
+// When the enclosure overflows on every range around the root, the filter may not guess: it
+// leaves the query undecided (the caller's exact path answers). 2^900·t^14·(t − 2^60) at bits 0:
+// near t = 2^60 every enclosure is beyond 2^1024; the exact path finds the failure at 2^60.
+TEST(FailureFilter, EnclosuresOverflowingAtTheRootLeaveTheQueryUndecided) {
+  std::vector<Integer> c(16, Integer(0));
+  c[14] = -(Integer(1) << 960);
+  c[15] = Integer(1) << 900;
+  Polynomial p(c);
+  const std::int64_t a = 1, b = std::int64_t{1} << 61;
+  FailureFilterResult f = filtered_next_failure(p, double_coefficients(p), 0, a, b);
+  EXPECT_FALSE(f.decided);
+  LatticeRootSolver exact(p, 0);
+  std::optional<Integer> e = exact.next_failure_after(Dyadic(Integer(a), 0), Dyadic(Integer(b), 0));
+  ASSERT_TRUE(e);
+  EXPECT_EQ(*e, Integer(1) << 60);
+}
+
 TEST(FailureFilter, ContractViolationsAreRefused) {
   // The proof needs the range inside |a|, |b| < 2^62 (b − a < 2^63, no signed overflow) and the
   // double coefficients of p (at least as many as p has coefficients, as filtered_sign_at checks).
