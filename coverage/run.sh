@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Line and branch coverage of the unit, property, fuzz-replay, CLI and audit --quick tests.
 # Usage: coverage/run.sh [LINES_PERCENT [BRANCHES_PERCENT]]   (defaults 95 and 85, for all of src/;
-#        BRANCHES_PERCENT gates the figure without contract checks, see below)
+#        BRANCHES_PERCENT gates "branches": every branch but the compiler's exception edges)
 # Builds build-coverage/ with -DKMR_COVERAGE=ON (gcc --coverage, -O0), runs ctest -L
 # 'unit|prop|fuzz|audit' except audit.full (the CLI tests are label unit; audit.quick runs every
 # chapter's quick checks; no clang libFuzzer build), reads the counters with gcov (branch coverage on), keeps
@@ -12,8 +12,9 @@
 # contract checks" also leaves out the branches of lines that are exactly a `KMR_CHECK(...)` (the
 # failing side of a contract check throws ContractError, reachable only through a bug in kmr; lcov's
 # lcov_excl_br_line idiom for assert macros; coverage/gcov_to_lcov.py says exactly which lines).
-# The branch gate uses the second figure, "branches without contract checks"; the line gate counts
-# every line.
+# The branch gate uses the first figure, "branches" (since rel8: KMR_CHECK's failing side is one
+# out-of-line call, so a check line keeps only its condition's branches); the second is printed for
+# comparison with earlier runs. The line gate counts every line.
 # Not run here: `install.find_package_consumer` (it links the installed, --coverage-instrumented
 # libraries into a consumer built without --coverage, which cannot link; it tests packaging, not src/).
 # Per-test timeouts are 4x the plain run's (KMR_TEST_TIMEOUT_SCALE: kmr_gtest for GoogleTest binaries,
@@ -79,11 +80,11 @@ for layer in src/*/; do
   summary "${layer%/}" "$PWD/$layer" 2>/dev/null
 done
 summary "src (all)" "$PWD/src/" 2>/dev/null
-read -r lines all_branches branches < <(summary "src (all)" "$PWD/src/" 2>&1 >/dev/null)
+read -r lines branches gated_branches < <(summary "src (all)" "$PWD/src/" 2>&1 >/dev/null)
 echo "HTML report: coverage/out/index.html"
 ((tests_ok)) || { echo "FAIL: some tests failed (ctest output above); coverage reported anyway"; exit 1; }
 if awk -v l="$lines" -v b="$branches" -v tl="$threshold" -v tb="$branch_threshold" 'BEGIN { exit !(l < tl || b < tb) }'; then
-  echo "FAIL: src/ coverage lines ${lines}% (need ${threshold}%), branches without contract checks ${branches}% (need ${branch_threshold}%; all branches ${all_branches}%)"
+  echo "FAIL: src/ coverage lines ${lines}% (need ${threshold}%), branches ${branches}% (need ${branch_threshold}%; without contract checks ${gated_branches}%)"
   exit 1
 fi
-echo "OK: src/ coverage lines ${lines}% >= ${threshold}%, branches without contract checks ${branches}% >= ${branch_threshold}% (all branches ${all_branches}%)"
+echo "OK: src/ coverage lines ${lines}% >= ${threshold}%, branches ${branches}% >= ${branch_threshold}% (without contract checks ${gated_branches}%)"
