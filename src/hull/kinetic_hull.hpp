@@ -32,9 +32,9 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
+#include "hull/key_table.hpp"
 #include "hull/moving_points.hpp"
 #include "kinetic/motion_simulator.hpp"
 #include "sac/runtime.hpp"
@@ -138,7 +138,7 @@ class KineticHull {
   void set_present(int x, bool on);
   void index_certificate(const CertificateKey& key, bool add);
   struct Registration;
-  void register_sim(kinetic::CertificateId id, Registration* reg);
+  void register_sim(kinetic::CertificateId id, CertificateMod* cert);
   // A certificate's polynomial: in machine form when its points have one (moving_points.hpp), else
   // as a Polynomial; the two are the same polynomial.
   struct CertificatePolynomial {
@@ -174,7 +174,8 @@ class KineticHull {
   std::optional<MachinePoint> machine_centre_;        // of centre_sum_, when all four have one
   std::optional<std::pair<std::int64_t, int>> t_lattice_;  // t_ = k·2^-b with |k| < 2^53, 0 ≤ b ≤ 62
   sac::Runtime rt_;
-  // Lookup-only tables (iteration order never reaches a result: what is listed is sorted first).
+  // Lookup-only flat tables (key_table.hpp; iteration order never reaches a result: what is
+  // listed is sorted first).
   struct KeyHash {
     template <std::size_t N>
     std::size_t operator()(const std::array<int, N>& k) const {
@@ -183,9 +184,9 @@ class KineticHull {
       return static_cast<std::size_t>(h);
     }
   };
-  std::unordered_map<CertificateKey, Registration, KeyHash> certs_;  // live certificates
-  std::vector<Registration*> by_sim_;  // simulator id → its live registration (node-stable), or null
-  std::unordered_map<std::array<int, 3>, std::pair<FaceH, sac::HookId>, KeyHash> faces_;  // live faces by vertices
+  KeyTable<CertificateKey, Registration, KeyHash> certs_;  // live certificates
+  std::vector<CertificateMod*> by_sim_;  // simulator id → the traceable holding its key, or null
+  KeyTable<std::array<int, 3>, std::pair<FaceH, sac::HookId>, KeyHash> faces_;  // live faces by vertices
   KineticCounters counters_;
 };
 
