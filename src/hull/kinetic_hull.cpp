@@ -366,7 +366,18 @@ void KineticHull::propagate() {
   ++counters_.propagations;
 }
 
+void KineticHull::build_point_index() {
+  by_point_.assign(pts_.size(), {});
+  by_point_live_.assign(pts_.size(), 0);
+  by_point_built_ = true;
+  std::vector<CertificateKey> keys;  // in key order (not the table's), so the lists are deterministic
+  certs_.for_each([&](const CertificateKey& key, const Registration&) { keys.push_back(key); });
+  std::sort(keys.begin(), keys.end());
+  for (const CertificateKey& key : keys) index_certificate(key, true);
+}
+
 void KineticHull::index_certificate(const CertificateKey& key, bool add) {
+  if (!by_point_built_) return;  // built at the first change_motion
   if (by_point_.size() < pts_.size()) by_point_.resize(pts_.size()), by_point_live_.resize(pts_.size());
   for (int i = 1; i < 5; ++i) {
     if (key[i] < 0) continue;
@@ -430,6 +441,7 @@ void KineticHull::change_motion(int x, MovingPoint r) {
   const bool centre = std::count(before.begin(), before.end(), x) > 0;
   if (centre) centre_sum_ = trajectory_sum(pts_[before[0]], pts_[before[1]], pts_[before[2]], pts_[before[3]]);
   refresh_machine_points(x);
+  if (!by_point_built_) build_point_index();
   std::vector<CertificateKey> affected;
   if (centre)
     certs_.for_each([&](const CertificateKey& key, const Registration&) {

@@ -165,9 +165,13 @@ class KineticHull {
   std::vector<bool> present_;
   std::vector<sac::Mod<bool>*> present_box_;                          // inputs, one per point
   // point → keys of its certificates: every live one, plus removed ones (skipped and compacted
-  // away lazily, so a removal costs nothing); by_point_live_ counts the live ones.
+  // away lazily, so a removal costs nothing); by_point_live_ counts the live ones. Built at the
+  // first change_motion (from the live certificates), kept from then on: a simulation without
+  // motion changes never pays for it.
   std::vector<std::vector<CertificateKey>> by_point_;
   std::vector<int> by_point_live_;
+  bool by_point_built_ = false;
+  void build_point_index();
   std::array<int, 4> simplex_{};
   MovingPoint centre_sum_;
   std::vector<std::optional<MachinePoint>> machine_;  // machine forms of pts_ (issue 9)
