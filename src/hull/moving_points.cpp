@@ -90,7 +90,7 @@ poly::MachinePolynomial rows_determinant(const MachinePoint& u, const MachinePoi
   const I c1 = dot(u.v, xx) + dot(u.x, mixed);
   const I c2 = dot(u.x, vv) + dot(u.v, mixed);
   const I c3 = dot(u.v, vv);
-  return poly::MachinePolynomial::linear(c0, c1) + poly::MachinePolynomial::cubic_terms(c2, c3);
+  return poly::MachinePolynomial::cubic(c0, c1, c2, c3);
 }
 MachinePoint difference(const MachinePoint& a, const MachinePoint& b, std::int64_t ka = 1, std::int64_t kb = 1) {
   MachinePoint r;
