@@ -325,10 +325,8 @@ void KineticHull::refresh_machine_points(int x) {
 
 KineticHull::~KineticHull() {
   if (!sim_) return;
-  std::vector<kinetic::CertificateId> ids;  // removed in increasing id order, not the table's
-  certs_.for_each([&](const CertificateKey&, const Registration& reg) { ids.push_back(reg.sim); });
-  std::sort(ids.begin(), ids.end());
-  for (kinetic::CertificateId id : ids) sim_->remove(id);
+  for (kinetic::CertificateId id = 0; id < by_sim_.size(); ++id)  // increasing id order, not the table's
+    if (by_sim_[id]) sim_->remove(id);
 }
 
 // run / incrementalHull / app insertVertex: the initial tetrahedron (its orientation a

@@ -180,12 +180,17 @@ class KineticHull {
   sac::Runtime rt_;
   // Lookup-only flat tables (key_table.hpp; iteration order never reaches a result: what is
   // listed is sorted first).
-  struct KeyHash {
+  struct KeyHash {  // two ints per 64-bit word, a multiply per word, one finalizer (sac::mix)
     template <std::size_t N>
     std::size_t operator()(const std::array<int, N>& k) const {
       std::uint64_t h = 0x6b6579;
-      for (int v : k) h = sac::mix(h, static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)));
-      return static_cast<std::size_t>(h);
+      for (std::size_t i = 0; i < N; i += 2) {
+        std::uint64_t w = static_cast<std::uint32_t>(k[i]);
+        if (i + 1 < N) w |= static_cast<std::uint64_t>(static_cast<std::uint32_t>(k[i + 1])) << 32;
+        h = (h ^ w) * 0x9e3779b97f4a7c15ULL;
+        h ^= h >> 29;
+      }
+      return static_cast<std::size_t>(sac::mix(h, N));
     }
   };
   KeyTable<CertificateKey, Registration, KeyHash> certs_;  // live certificates
