@@ -184,7 +184,7 @@ struct KineticRun {
   int n = 0;
   long long batches = 0, events = 0, max_batch = 0, checked = 0, changes = 0;
   std::string hull_failure, stability_failure, compactness_failure;
-  double initial_seconds = 0, propagation_seconds = 0, integrated_seconds = 0;
+  double initial_seconds = 0, propagation_seconds = 0, next_batch_seconds = 0, integrated_seconds = 0;
   std::size_t live_certificates = 0;
 };
 // The judged values pass through measured() (audit.hpp's seam of tests; `o` carries it).
@@ -215,7 +215,9 @@ KineticRun simulate(const Options& o, int n, std::uint64_t seed, long long max_e
   if (check_every > 0) judge();
   std::size_t next_change = 0;
   while (sim.counters().events < max_events) {
+    auto t3 = std::chrono::steady_clock::now();
     auto batch = sim.next_batch(until);
+    r.next_batch_seconds += since(t3);
     if (!batch) break;
     auto t1 = std::chrono::steady_clock::now();
     kh.update(*batch);
@@ -295,10 +297,11 @@ Verdict kinetic_batches(const Options& o) {
   return v;
 }
 // Fig. 2.4 (initial run ÷ static), 2.5 (time per event ÷ log n over the first 5n events),
-// 2.6 (static from scratch ÷ one event's propagation), 2.7 (time per integrated change ÷ log n).
+// 2.6 (static from scratch ÷ one event's propagation, and ÷ propagation + its share of the
+// simulator's next_batch), 2.7 (time per integrated change ÷ log n).
 struct Timing {
   int n;
-  double initial, statics, per_event, per_change;
+  double initial, statics, per_event, per_event_with_next, per_change;
 };
 const std::vector<Timing>& timings(const Options& o) {
   static std::map<std::pair<bool, std::uint64_t>, std::vector<Timing>> cache;
@@ -321,7 +324,8 @@ const std::vector<Timing>& timings(const Options& o) {
       hull::KineticHull kh(moving, sim, o.seed + 7 * n);
       best_initial = std::min(best_initial, since(t1));
     }
-    out.push_back({n, best_initial, best, r.propagation_seconds / double(std::max<long long>(1, r.events)),
+    const double events = double(std::max<long long>(1, r.events));
+    out.push_back({n, best_initial, best, r.propagation_seconds / events, (r.propagation_seconds + r.next_batch_seconds) / events,
                    r.integrated_seconds / double(std::max<long long>(1, r.changes))});
   }
   return cache.emplace(key, out).first->second;
@@ -359,12 +363,15 @@ Verdict kinetic_speedup(const Options& o) {
   double last = 0;
   for (const Timing& t : timings(o)) {
     v.figure("static ÷ per-event propagation, n = " + std::to_string(t.n), fmt(t.statics / t.per_event));
-    last = t.statics / t.per_event;
+    v.figure("static ÷ per-event (propagation + next_batch), n = " + std::to_string(t.n), fmt(t.statics / t.per_event_with_next));
+    last = t.statics / t.per_event_with_next;
   }
-  v.summary = "exact static from scratch ÷ mean propagation per event";
+  v.summary = "exact static from scratch ÷ mean time per event: propagation, and propagation + next_batch (the simulator's "
+              "share: queue and failure intervals; the target is judged on this one)";
   // The issue's target is at n = 10^4 (bench/hull); the audit's largest size stands in for it, and the
   // speedup grows with n, so a miss here is a miss at the audit's sizes, said as such.
-  v.set_target("static ÷ one event's propagation ≥ 100 (issue 9, at n = 10^4; judged here at the audit's largest n)", last >= 100);
+  v.set_target("static ÷ one event (propagation + next_batch) ≥ 100 (issue 9, at n = 10^4; judged here at the audit's largest n)",
+               last >= 100);
   v.thesis = "Fig. 2.6: speedup grows with n (orders of magnitude)";
   return v;
 }
@@ -385,7 +392,7 @@ std::vector<Check> hull_checks() {
       {"F2.4-batch-size", "mean certificate failures per lattice batch at δ = 2^-10", kinetic_batches},
       {"F2.4-initial-run", "initial kinetic run ÷ exact static run", kinetic_initial},
       {"F2.5-time-per-event", "time per kinetic event ÷ log n", kinetic_per_event},
-      {"F2.6-speedup", "exact static from scratch ÷ one event's propagation", kinetic_speedup},
+      {"F2.6-speedup", "exact static from scratch ÷ one event (propagation + next_batch)", kinetic_speedup},
       {"F2.7-integrated-events", "time per integrated change ÷ log n", kinetic_integrated},
   };
 }

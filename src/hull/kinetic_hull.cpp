@@ -324,8 +324,9 @@ void KineticHull::refresh_machine_points(int x) {
 }
 
 KineticHull::~KineticHull() {
-  if (sim_)
-    for (auto& [key, reg] : certs_) sim_->remove(reg.sim);
+  if (!sim_) return;
+  for (kinetic::CertificateId id = 0; id < by_sim_.size(); ++id)  // increasing id order, not the table's
+    if (by_sim_[id]) sim_->remove(id);
 }
 
 // run / incrementalHull / app insertVertex: the initial tetrahedron (its orientation a
@@ -352,7 +353,7 @@ void KineticHull::update(const std::vector<kinetic::CertificateId>& batch) {
   KMR_CHECK(sim_ != nullptr, "KineticHull::update on a from-scratch reference");
   for (kinetic::CertificateId id : batch) {
     KMR_CHECK(id < by_sim_.size() && by_sim_[id], "kinetic hull: a batch names a certificate the hull does not own");
-    rt_.change(by_sim_[id]->cert, sim_->outcome(id));
+    rt_.change(by_sim_[id], sim_->outcome(id));
   }
   propagate();
 }
@@ -363,7 +364,18 @@ void KineticHull::propagate() {
   ++counters_.propagations;
 }
 
+void KineticHull::build_point_index() {
+  by_point_.assign(pts_.size(), {});
+  by_point_live_.assign(pts_.size(), 0);
+  by_point_built_ = true;
+  std::vector<CertificateKey> keys;  // in key order (not the table's), so the lists are deterministic
+  certs_.for_each([&](const CertificateKey& key, const Registration&) { keys.push_back(key); });
+  std::sort(keys.begin(), keys.end());
+  for (const CertificateKey& key : keys) index_certificate(key, true);
+}
+
 void KineticHull::index_certificate(const CertificateKey& key, bool add) {
+  if (!by_point_built_) return;  // built at the first change_motion
   if (by_point_.size() < pts_.size()) by_point_.resize(pts_.size()), by_point_live_.resize(pts_.size());
   for (int i = 1; i < 5; ++i) {
     if (key[i] < 0) continue;
@@ -378,14 +390,14 @@ void KineticHull::index_certificate(const CertificateKey& key, bool add) {
     if (v.size() > 2 * static_cast<std::size_t>(by_point_live_[x]) + 16) {  // compact: live keys, once each
       std::sort(v.begin(), v.end());
       v.erase(std::unique(v.begin(), v.end()), v.end());
-      std::erase_if(v, [this](const CertificateKey& k) { return !certs_.count(k); });
+      std::erase_if(v, [this](const CertificateKey& k) { return !certs_.contains(k); });
     }
   }
 }
 
-void KineticHull::register_sim(kinetic::CertificateId id, Registration* reg) {
+void KineticHull::register_sim(kinetic::CertificateId id, CertificateMod* cert) {
   if (by_sim_.size() <= id) by_sim_.resize(id + 1, nullptr);
-  by_sim_[id] = reg;
+  by_sim_[id] = cert;
 }
 
 // §2.4's motion change: every live certificate whose polynomial involves x (all centre tests and
@@ -427,13 +439,15 @@ void KineticHull::change_motion(int x, MovingPoint r) {
   const bool centre = std::count(before.begin(), before.end(), x) > 0;
   if (centre) centre_sum_ = trajectory_sum(pts_[before[0]], pts_[before[1]], pts_[before[2]], pts_[before[3]]);
   refresh_machine_points(x);
+  if (!by_point_built_) build_point_index();
   std::vector<CertificateKey> affected;
   if (centre)
-    for (const auto& [key, reg] : certs_)
+    certs_.for_each([&](const CertificateKey& key, const Registration&) {
       if (key[0] != static_cast<int>(Test::visible)) affected.push_back(key);
+    });
   if (static_cast<std::size_t>(x) < by_point_.size())
     for (const CertificateKey& key : by_point_[x])
-      if (certs_.count(key)) affected.push_back(key);
+      if (certs_.contains(key)) affected.push_back(key);
   std::sort(affected.begin(), affected.end());
   affected.erase(std::unique(affected.begin(), affected.end()), affected.end());
   std::vector<CertificatePolynomial> polys;  // all computed first: a refused change changes nothing
@@ -447,13 +461,13 @@ void KineticHull::change_motion(int x, MovingPoint r) {
     }
   }
   for (std::size_t i = 0; i < affected.size(); ++i) {
-    Registration& reg = certs_.at(affected[i]);
+    Registration& reg = *certs_.find(affected[i]);  // (no insert or erase in this loop)
     int outcome;
     if (sim_) {
       sim_->remove(reg.sim);
       by_sim_[reg.sim] = nullptr;
       reg.sim = polys[i].machine ? sim_->add(*polys[i].machine) : sim_->add(polys[i].exact);
-      register_sim(reg.sim, &reg);
+      register_sim(reg.sim, reg.cert);
       ++counters_.certificates_created;
       outcome = sim_->outcome(reg.sim);
     } else {
@@ -538,11 +552,11 @@ sac::Mod<int>* KineticHull::certificate(Test test, int a, int b, int c, int d) {
 
 void KineticHull::init_certificate(CertificateMod& m, Test test, int a, int b, int c, int d) {
   const CertificateKey key{static_cast<int>(test), a, b, c, d};
-  auto it = certs_.find(key);
-  if (it != certs_.end()) {  // re-created under its key before its predecessor's release: the
-    m.value = it->second.cert->value;  // simulator keeps its certificate (the same polynomial's outcome)
-    it->second.cert->payload.current = false;
-    it->second.cert = &m;
+  if (Registration* it = certs_.find(key)) {  // re-created under its key before its predecessor's
+    m.value = it->cert->value;  // release: the simulator keeps its certificate (the same outcome)
+    it->cert->payload.current = false;
+    it->cert = &m;
+    if (sim_) register_sim(it->sim, &m);
   } else {
     CertificatePolynomial P = polynomial(test, a, b, c, d);
     if (P.is_zero()) throw InputError(describe(test, a, b, c, d));
@@ -554,9 +568,9 @@ void KineticHull::init_certificate(CertificateMod& m, Test test, int a, int b, i
     } else {
       m.value = sign_before_t(P);
     }
-    Registration& reg = certs_.emplace(key, Registration{&m, sid}).first->second;
+    certs_.insert(key, Registration{&m, sid});
     index_certificate(key, true);
-    if (sim_) register_sim(sid, &reg);
+    if (sim_) register_sim(sid, &m);
   }
   m.payload.key = key;
   m.payload.current = true;
@@ -565,33 +579,33 @@ void KineticHull::init_certificate(CertificateMod& m, Test test, int a, int b, i
 void KineticHull::certificate_released(CertificateMod* m) {
   if (!m->payload.current) return;  // a successor's registration
   const CertificateKey key = m->payload.key;
-  auto it = certs_.find(key);
-  KMR_CHECK(it != certs_.end() && it->second.cert == m, "kinetic hull: a released certificate is not registered");
+  const Registration* it = certs_.find(key);
+  KMR_CHECK(it != nullptr && it->cert == m, "kinetic hull: a released certificate is not registered");
   if (sim_) {
-    sim_->remove(it->second.sim);
-    by_sim_[it->second.sim] = nullptr;
+    sim_->remove(it->sim);
+    by_sim_[it->sim] = nullptr;
   }
-  certs_.erase(it);
+  certs_.erase(key);
   index_certificate(key, false);
 }
 
-void KineticHull::face_created(FaceH f, sac::HookId hook) { faces_[rt_.deref(f).v] = {f, hook}; }
+void KineticHull::face_created(FaceH f, sac::HookId hook) { faces_.assign(rt_.deref(f).v, {f, hook}); }
 
 void KineticHull::face_discarded(const std::array<int, 3>& key, sac::HookId self) {
-  auto it = faces_.find(key);
-  if (it != faces_.end() && it->second.second == self) faces_.erase(it);
+  const auto* it = faces_.find(key);
+  if (it && it->second == self) faces_.erase(key);
 }
 
 std::vector<std::array<int, 3>> KineticHull::facets() const {
   std::vector<std::array<int, 3>> out;
-  for (const auto& [key, reg] : faces_) {
+  faces_.for_each([&](const std::array<int, 3>&, const std::pair<FaceH, sac::HookId>& reg) {
     const Face& f = rt_.deref(reg.first);
     const Killer& k = *static_cast<const Killer*>(killer_box(f)->last->value);  // the latest write
-    if (k.p >= 0) continue;
+    if (k.p >= 0) return;
     std::array<int, 3> t = f.v;
     std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
     out.push_back(t);
-  }
+  });
   std::sort(out.begin(), out.end());
   return out;
 }
@@ -606,7 +620,7 @@ std::vector<int> KineticHull::vertices() const {
 
 std::vector<KineticHull::CertificateKey> KineticHull::certificate_keys() const {
   std::vector<CertificateKey> k;
-  for (const auto& [key, reg] : certs_) k.push_back(key);
+  certs_.for_each([&](const CertificateKey& key, const Registration&) { k.push_back(key); });
   std::sort(k.begin(), k.end());
   return k;
 }

@@ -32,9 +32,9 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
+#include "hull/key_table.hpp"
 #include "hull/moving_points.hpp"
 #include "kinetic/motion_simulator.hpp"
 #include "sac/runtime.hpp"
@@ -138,7 +138,7 @@ class KineticHull {
   void set_present(int x, bool on);
   void index_certificate(const CertificateKey& key, bool add);
   struct Registration;
-  void register_sim(kinetic::CertificateId id, Registration* reg);
+  void register_sim(kinetic::CertificateId id, CertificateMod* cert);
   // A certificate's polynomial: in machine form when its points have one (moving_points.hpp), else
   // as a Polynomial; the two are the same polynomial.
   struct CertificatePolynomial {
@@ -165,27 +165,37 @@ class KineticHull {
   std::vector<bool> present_;
   std::vector<sac::Mod<bool>*> present_box_;                          // inputs, one per point
   // point → keys of its certificates: every live one, plus removed ones (skipped and compacted
-  // away lazily, so a removal costs nothing); by_point_live_ counts the live ones.
+  // away lazily, so a removal costs nothing); by_point_live_ counts the live ones. Built at the
+  // first change_motion (from the live certificates), kept from then on: a simulation without
+  // motion changes never pays for it.
   std::vector<std::vector<CertificateKey>> by_point_;
   std::vector<int> by_point_live_;
+  bool by_point_built_ = false;
+  void build_point_index();
   std::array<int, 4> simplex_{};
   MovingPoint centre_sum_;
   std::vector<std::optional<MachinePoint>> machine_;  // machine forms of pts_ (issue 9)
   std::optional<MachinePoint> machine_centre_;        // of centre_sum_, when all four have one
   std::optional<std::pair<std::int64_t, int>> t_lattice_;  // t_ = k·2^-b with |k| < 2^53, 0 ≤ b ≤ 62
   sac::Runtime rt_;
-  // Lookup-only tables (iteration order never reaches a result: what is listed is sorted first).
-  struct KeyHash {
+  // Lookup-only flat tables (key_table.hpp; iteration order never reaches a result: what is
+  // listed is sorted first).
+  struct KeyHash {  // two ints per 64-bit word, a multiply per word, one finalizer (sac::mix)
     template <std::size_t N>
     std::size_t operator()(const std::array<int, N>& k) const {
       std::uint64_t h = 0x6b6579;
-      for (int v : k) h = sac::mix(h, static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)));
-      return static_cast<std::size_t>(h);
+      for (std::size_t i = 0; i < N; i += 2) {
+        std::uint64_t w = static_cast<std::uint32_t>(k[i]);
+        if (i + 1 < N) w |= static_cast<std::uint64_t>(static_cast<std::uint32_t>(k[i + 1])) << 32;
+        h = (h ^ w) * 0x9e3779b97f4a7c15ULL;
+        h ^= h >> 29;
+      }
+      return static_cast<std::size_t>(sac::mix(h, N));
     }
   };
-  std::unordered_map<CertificateKey, Registration, KeyHash> certs_;  // live certificates
-  std::vector<Registration*> by_sim_;  // simulator id → its live registration (node-stable), or null
-  std::unordered_map<std::array<int, 3>, std::pair<FaceH, sac::HookId>, KeyHash> faces_;  // live faces by vertices
+  KeyTable<CertificateKey, Registration, KeyHash> certs_;  // live certificates
+  std::vector<CertificateMod*> by_sim_;  // simulator id → the traceable holding its key, or null
+  KeyTable<std::array<int, 3>, std::pair<FaceH, sac::HookId>, KeyHash> faces_;  // live faces by vertices
   KineticCounters counters_;
 };
 

@@ -83,14 +83,34 @@ I dot(const V3& a, const I3& x) { return a[0] * x[0] + a[1] * x[1] + a[2] * x[2]
 // c0 = det3(u.x, v.x, w.x), c1 = det3(u.v, v.x, w.x) + det3(u.x, v.v, w.x) + det3(u.x, v.x, w.v),
 // c2 = det3(u.x, v.v, w.v) + det3(u.v, v.x, w.v) + det3(u.v, v.v, w.x), c3 = det3(u.v, v.v, w.v),
 // with the four cross products of v's and w's rows shared (exact integers: the same coefficients).
+// When every entry of v's and w's rows is below 2^31 in magnitude (§2.4's inputs: ≤ 2^23), each
+// cross product entry fits int64 (|b1·c2 − b2·c1| ≤ 2·(2^31 − 1)^2 < 2^63) and each term of a dot
+// product is one 64×64 → 128-bit product: the same exact integers with fewer wide multiplies.
+// (The two mixed cross products are dotted separately: their sum may exceed int64.)
+using L3 = std::array<std::int64_t, 3>;
+L3 cross64(const V3& b, const V3& c) {
+  return {b[1] * c[2] - b[2] * c[1], b[2] * c[0] - b[0] * c[2], b[0] * c[1] - b[1] * c[0]};
+}
+I dot64(const V3& a, const L3& x) { return I(a[0]) * x[0] + I(a[1]) * x[1] + I(a[2]) * x[2]; }
+bool below_2_31(const MachinePoint& p) {
+  constexpr std::int64_t lim = std::int64_t{1} << 31;
+  bool ok = true;
+  for (int k = 0; k < 3; ++k) ok = ok && p.x[k] > -lim && p.x[k] < lim && p.v[k] > -lim && p.v[k] < lim;
+  return ok;
+}
 poly::MachinePolynomial rows_determinant(const MachinePoint& u, const MachinePoint& v, const MachinePoint& w) {
+  if (below_2_31(v) && below_2_31(w)) {
+    const L3 xx = cross64(v.x, w.x), vv = cross64(v.v, w.v), m0 = cross64(v.v, w.x), m1 = cross64(v.x, w.v);
+    return poly::MachinePolynomial::cubic(dot64(u.x, xx), dot64(u.v, xx) + dot64(u.x, m0) + dot64(u.x, m1),
+                                          dot64(u.x, vv) + dot64(u.v, m0) + dot64(u.v, m1), dot64(u.v, vv));
+  }
   const I3 xx = cross(v.x, w.x), vv = cross(v.v, w.v), mixed0 = cross(v.v, w.x), mixed1 = cross(v.x, w.v);
   const I3 mixed{mixed0[0] + mixed1[0], mixed0[1] + mixed1[1], mixed0[2] + mixed1[2]};
   const I c0 = dot(u.x, xx);
   const I c1 = dot(u.v, xx) + dot(u.x, mixed);
   const I c2 = dot(u.x, vv) + dot(u.v, mixed);
   const I c3 = dot(u.v, vv);
-  return poly::MachinePolynomial::linear(c0, c1) + poly::MachinePolynomial::cubic_terms(c2, c3);
+  return poly::MachinePolynomial::cubic(c0, c1, c2, c3);
 }
 MachinePoint difference(const MachinePoint& a, const MachinePoint& b, std::int64_t ka = 1, std::int64_t kb = 1) {
   MachinePoint r;

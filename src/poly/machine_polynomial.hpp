@@ -31,6 +31,15 @@ class MachinePolynomial {
     return p;
   }
 
+  // c0 + c1·t + c2·t² + c3·t³ stored directly: the same polynomial as linear(c0, c1) +
+  // cubic_terms(c2, c3) (the kinetic hull's orient3d cubics, moving_points.cpp), without the
+  // generic sum's overflow checks (adding zeros cannot overflow) and its second trim.
+  static MachinePolynomial cubic(__int128 c0, __int128 c1, __int128 c2, __int128 c3) {
+    MachinePolynomial p;
+    p.c_ = {c0, c1, c2, c3};
+    p.trim();
+    return p;
+  }
   static MachinePolynomial cubic_terms(__int128 c2, __int128 c3) {  // c2·t² + c3·t³
     MachinePolynomial p;
     p.c_[2] = c2;

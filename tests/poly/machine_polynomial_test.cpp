@@ -122,6 +122,22 @@ TEST(MachinePolynomial, ArithmeticIsPolynomialArithmetic) {
   }
 }
 
+// The cubic fast path (the hull's orient3d cubics) against the generic sum it replaces and
+// against Polynomial: the same coefficients and degree, zero coefficients (trimmed) included.
+TEST(MachinePolynomial, CubicIsTheGenericSum) {
+  std::mt19937_64 rng(3);
+  for (int i = 0; i < 20000; ++i) {
+    std::vector<__int128> c(4);
+    for (auto& x : c) x = rng() % 3 == 0 ? 0 : random_value(rng, 1 + static_cast<int>(rng() % 123));
+    const M fast = M::cubic(c[0], c[1], c[2], c[3]);
+    const M generic = M::linear(c[0], c[1]) + M::cubic_terms(c[2], c[3]);
+    ASSERT_EQ(fast, generic);
+    ASSERT_EQ(fast.degree(), generic.degree());
+    ASSERT_EQ(fast.to_polynomial(), reference(c));
+    ASSERT_EQ(fast.is_zero(), c == std::vector<__int128>(4, 0));
+  }
+}
+
 TEST(MachinePolynomial, OverflowAndHighDegreeAreRefused) {
   const M big(static_cast<__int128>(1) << 100);
   EXPECT_THROW(big * big, ContractError);

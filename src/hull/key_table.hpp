@@ -1,0 +1,122 @@
+#pragma once
+// KeyTable: a flat hash table from small fixed-size keys to values (the kinetic hull's live
+// certificates and live faces, issue 9: one array instead of one heap node per entry).
+//
+// Guarantees (tests/hull/key_table_test.cpp, against std::map under random operations):
+//  * find / insert / erase / size behave as a map's: find(k) is the value stored under k, or null;
+//    insert(k, v) stores v under an absent k (refused with a ContractError if k is present);
+//    erase(k) removes k and says whether it was there; clear() empties the table.
+//  * Open addressing with linear probing in a power-of-two array, at most half full (grown by
+//    doubling; each slot keeps its key's hash, so growth and deletion never rehash a key, and a
+//    probe compares keys only when the hashes agree). Deletion is backward-shift: every entry after the erased slot in its
+//    probe run moves back when the vacancy lies between its home slot and its slot, so no
+//    tombstones exist and every key stays reachable from its home slot with no gap before it.
+//  * Pointers and references to values are invalidated by insert (growth) and by erase (shifts):
+//    hold keys, not pointers, across them.
+//  * Iteration (for_each) visits entries in slot order, i.e. in hash order: a caller must never
+//    let that order reach a result (sort what it collects). Lookups are deterministic given the
+//    hash; the table never depends on addresses.
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "exact/error.hpp"
+
+namespace kmr::hull {
+
+template <class K, class V, class Hash>
+class KeyTable {
+ public:
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+
+  V* find(const K& k) {
+    if (slots_.empty()) return nullptr;
+    const std::uint32_t h = hash(k);
+    for (std::size_t i = h & mask();; i = next(i)) {
+      Slot& s = slots_[i];
+      if (!s.full) return nullptr;
+      if (s.hash == h && s.key == k) return &s.value;
+    }
+  }
+  const V* find(const K& k) const { return const_cast<KeyTable*>(this)->find(k); }
+  bool contains(const K& k) const { return find(k) != nullptr; }
+
+  V& insert(const K& k, V v) {
+    if (2 * (size_ + 1) > slots_.size()) grow();
+    const std::uint32_t h = hash(k);
+    std::size_t i = h & mask();
+    for (; slots_[i].full; i = next(i))
+      KMR_CHECK(!(slots_[i].hash == h && slots_[i].key == k), "KeyTable::insert: the key is present");
+    slots_[i] = Slot{k, h, true, std::move(v)};
+    ++size_;
+    return slots_[i].value;
+  }
+  // Stores v under k, replacing a present value.
+  V& assign(const K& k, V v) {
+    if (V* p = find(k)) return *p = std::move(v);
+    return insert(k, std::move(v));
+  }
+
+  bool erase(const K& k) {
+    if (slots_.empty()) return false;
+    const std::uint32_t hk = hash(k);
+    std::size_t i = hk & mask();
+    for (;; i = next(i)) {
+      if (!slots_[i].full) return false;
+      if (slots_[i].hash == hk && slots_[i].key == k) break;
+    }
+    // Backward shift: walk the run after the hole; an entry whose home is not cyclically in
+    // (hole, j] would become unreachable behind the hole, so it moves into it.
+    std::size_t hole = i;
+    for (std::size_t j = next(hole); slots_[j].full; j = next(j)) {
+      const std::size_t h = slots_[j].hash & mask();
+      const bool stays = hole < j ? (hole < h && h <= j) : (hole < h || h <= j);
+      if (stays) continue;
+      slots_[hole] = std::move(slots_[j]);
+      hole = j;
+    }
+    slots_[hole] = Slot{};
+    --size_;
+    return true;
+  }
+
+  void clear() {
+    slots_.clear();
+    size_ = 0;
+  }
+
+  // Visits (key, value) in slot order (hash order: see the header).
+  template <class F>
+  void for_each(F&& f) const {
+    for (const Slot& s : slots_)
+      if (s.full) f(s.key, s.value);
+  }
+
+ private:
+  struct Slot {
+    K key{};
+    std::uint32_t hash = 0;  // the low 32 bits of Hash{}(key): the home is hash & mask()
+    bool full = false;
+    V value{};
+  };
+  static std::uint32_t hash(const K& k) { return static_cast<std::uint32_t>(Hash{}(k)); }
+  std::size_t mask() const { return slots_.size() - 1; }
+  std::size_t next(std::size_t i) const { return (i + 1) & mask(); }
+  void grow() {  // capacity ≤ 2^32 (the stored hash's bits)
+    KMR_CHECK(slots_.size() < (std::size_t{1} << 32), "KeyTable: more than 2^31 entries");
+    std::vector<Slot> old = std::move(slots_);
+    slots_.assign(old.empty() ? 16 : 2 * old.size(), Slot{});
+    for (Slot& s : old) {
+      if (!s.full) continue;
+      std::size_t i = s.hash & mask();
+      while (slots_[i].full) i = next(i);
+      slots_[i] = std::move(s);
+    }
+  }
+  std::vector<Slot> slots_;
+  std::size_t size_ = 0;
+};
+
+}  // namespace kmr::hull

@@ -1,0 +1,100 @@
+// KeyTable (hull/key_table.hpp) against std::map under random insert / erase / find / assign
+// sequences: after every operation the answers agree, and periodically the whole contents (listed
+// by for_each, then sorted) equal the map's. A weak hash forces long probe runs and wrap-around,
+// where backward-shift deletion is exercised; the seed is printed.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <iostream>
+#include <map>
+#include <random>
+
+#include "exact/error.hpp"
+#include "hull/key_table.hpp"
+
+namespace kmr::hull {
+namespace {
+
+using Key = std::array<int, 5>;
+struct GoodHash {
+  std::size_t operator()(const Key& k) const {
+    std::uint64_t h = 1469598103934665603ULL;
+    for (int v : k) h = (h ^ static_cast<std::uint32_t>(v)) * 1099511628211ULL;
+    return static_cast<std::size_t>(h ^ (h >> 29));
+  }
+};
+struct WeakHash {  // 37 homes, the last slots of any power-of-two array: long runs that wrap
+  std::size_t operator()(const Key& k) const { return ~static_cast<std::size_t>(k[1] % 37); }
+};
+
+template <class Hash>
+void random_against_map(std::uint64_t seed, int ops, int key_range) {
+  std::cout << "key_table_test seed " << seed << " ops " << ops << " keys " << key_range << std::endl;
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> pick(0, key_range - 1), op(0, 9);
+  KeyTable<Key, long long, Hash> t;
+  std::map<Key, long long> m;
+  auto key = [&] {
+    const int x = pick(rng);
+    return Key{x % 3, x, x / 7, -1, x % 11};
+  };
+  for (int i = 0; i < ops; ++i) {
+    SCOPED_TRACE("seed " + std::to_string(seed) + ", operation " + std::to_string(i));
+    const Key k = key();
+    const int o = op(rng);
+    if (o < 4) {  // insert when absent, else assign
+      if (m.count(k)) {
+        t.assign(k, i);
+      } else {
+        EXPECT_EQ(t.insert(k, i), i);
+      }
+      m[k] = i;
+    } else if (o < 8) {
+      ASSERT_EQ(t.erase(k), m.erase(k) == 1);
+    } else {
+      const long long* v = t.find(k);
+      auto it = m.find(k);
+      ASSERT_EQ(v != nullptr, it != m.end());
+      if (v) {
+        ASSERT_EQ(*v, it->second);
+      }
+    }
+    ASSERT_EQ(t.size(), m.size());
+    if (i % 97 == 0 || i + 1 == ops) {
+      std::vector<std::pair<Key, long long>> listed;
+      t.for_each([&](const Key& a, long long b) { listed.emplace_back(a, b); });
+      std::sort(listed.begin(), listed.end());
+      const std::vector<std::pair<Key, long long>> expected(m.begin(), m.end());
+      ASSERT_EQ(listed, expected);
+      for (const auto& [a, b] : m) {
+        const long long* v = t.find(a);
+        ASSERT_TRUE(v != nullptr);
+        ASSERT_EQ(*v, b);
+      }
+    }
+  }
+}
+
+TEST(KeyTable, RandomOperationsAgreeWithMap) {
+  for (std::uint64_t seed : {1ULL, 2ULL, 2012ULL}) random_against_map<GoodHash>(seed, 20000, 3000);
+}
+
+TEST(KeyTable, CollidingHashAgreesWithMap) {  // every probe run long; erasures shift across the wrap
+  for (std::uint64_t seed : {3ULL, 4ULL, 77ULL}) random_against_map<WeakHash>(seed, 6000, 400);
+}
+
+TEST(KeyTable, InsertOfPresentKeyRefusedAndClearEmpties) {
+  KeyTable<Key, int, GoodHash> t;
+  t.insert(Key{0, 1, 2, 3, 4}, 5);
+  EXPECT_THROW(t.insert(Key{0, 1, 2, 3, 4}, 6), ContractError);
+  EXPECT_FALSE(t.erase(Key{0, 1, 2, 3, 5}));
+  t.clear();
+  EXPECT_EQ(t.size(), 0u);
+  EXPECT_EQ(t.find(Key{0, 1, 2, 3, 4}), nullptr);
+  t.insert(Key{0, 1, 2, 3, 4}, 7);
+  EXPECT_EQ(*t.find(Key{0, 1, 2, 3, 4}), 7);
+}
+
+}  // namespace
+}  // namespace kmr::hull
