@@ -17,6 +17,7 @@
 #include <boost/multiprecision/gmp.hpp>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <type_traits>
 #include <vector>
@@ -31,6 +32,7 @@ namespace kmr::wellspaced {
 using Q = boost::multiprecision::mpq_rational;
 using exact::IntervalNT;
 using exact::Uncertain;
+using exact::throw_uncertain;
 
 template <std::size_t D>
 using QPoint = std::array<Q, D>;
@@ -176,6 +178,42 @@ inline int dist2_minus_sign(const IPoint<D>& x, const IPoint<D>& c, const Interv
   if (s > e) return 1;
   if (s < -e) return -1;
   return 0;
+}
+// Enclosure of the meeting point of the lines A·x = B and E·x = F (2D, Cramer's rule:
+// x = (B·E1 − A1·F, A0·F − B·E0) / (A0·E1 − A1·E0)) for every point of the enclosures, from
+// one evaluation in doubles at their lower ends (issue 11 §4: the new vertices of a 2D clip).
+// Each of the three 2×2 terms x·y − z·w is off by ≤ wx(|y'| + wy) + |x'|wy (+ the same for z·w)
+// from its value at any point of the enclosures, plus ≤ 3u(|x'y'| + |z'w'|) of rounding; for
+// |d − d'| ≤ Ed < |d'| and |n − n'| ≤ En, |n/d − n'/d'| ≤ (En + |n'/d'|·Ed) / (|d'| − Ed), and
+// q = fl(n'/d') is within u|q|·(1 + u) of n'/d'. The bound's own roundings are covered by the
+// factor 1 + 2^-40 (and 1 − 2^-40 on the denominator), underflow by 2^-1000 absolute; the
+// endpoints are then stepped outward by one double. Throws Uncertain when the determinant's
+// enclosure may hold 0, is tiny (< 2^-900), or anything is not finite.
+inline std::array<IntervalNT, 2> meet_lines_2d(const std::array<IntervalNT, 2>& A, const IntervalNT& B,
+                                              const std::array<IntervalNT, 2>& E, const IntervalNT& F) {
+  struct Term {
+    double v, err;
+  };
+  auto term = [](const IntervalNT& x, const IntervalNT& y, const IntervalNT& z, const IntervalNT& w) {
+    const double xl = x.lo(), yl = y.lo(), zl = z.lo(), wl = w.lo();
+    const double wx = x.hi() - xl, wy = y.hi() - yl, wz = z.hi() - zl, ww = w.hi() - wl;
+    const double p1 = xl * yl, p2 = zl * wl;
+    const double width = wx * (std::fabs(yl) + wy) + std::fabs(xl) * wy + wz * (std::fabs(wl) + ww) + std::fabs(zl) * ww;
+    return Term{p1 - p2, (width + 3 * 0x1p-53 * (std::fabs(p1) + std::fabs(p2))) * kSafety + kTinyAbs};
+  };
+  const Term d = term(A[0], E[1], A[1], E[0]);
+  const double ad = std::fabs(d.v);
+  if (!(ad >= 0x1p-900 && ad > 2 * d.err)) throw_uncertain();
+  const double denom = (ad - d.err) * (1 - 0x1p-40);  // ≤ |d| for every d of the enclosure
+  std::array<IntervalNT, 2> x;
+  const Term n[2] = {term(B, E[1], A[1], F), term(A[0], F, B, E[0])};
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double q = n[i].v / d.v, aq = std::fabs(q);
+    const double e = ((n[i].err + aq * (1 + 0x1p-52) * d.err) / denom + aq * 0x1p-52) * kSafety + kTinyAbs;
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    x[i] = IntervalNT::hull(std::nextafter(q - e, -inf), std::nextafter(q + e, inf));  // throws if not finite
+  }
+  return x;
 }
 }  // namespace double_filter
 
@@ -471,9 +509,13 @@ struct Polytope {
     const Halfspace<D, NT>& hs = h[static_cast<std::size_t>(j)].h;
     if constexpr (D == 2) {
       const Halfspace<D, NT>& e = h[static_cast<std::size_t>(*common.begin())].h;
-      const NT det = hs.a[0] * e.a[1] - hs.a[1] * e.a[0];  // ≠ 0: the lines cross between p and q
-      nv.x[0] = (hs.b * e.a[1] - hs.a[1] * e.b) / det;
-      nv.x[1] = (hs.a[0] * e.b - hs.b * e.a[0]) / det;
+      if constexpr (is_interval_v<NT>) {  // one evaluation in doubles with an error bound
+        nv.x = double_filter::meet_lines_2d(hs.a, hs.b, e.a, e.b);
+      } else {
+        const NT det = hs.a[0] * e.a[1] - hs.a[1] * e.a[0];  // ≠ 0: the lines cross between p and q
+        nv.x[0] = (hs.b * e.a[1] - hs.a[1] * e.b) / det;
+        nv.x[1] = (hs.a[0] * e.b - hs.b * e.a[0]) / det;
+      }
     } else {
       NT sp = slack(hs, p.x), sq = slack(hs, q.x);
       NT lam = sp / (sp - sq);

@@ -273,3 +273,50 @@ TEST(WellspacedPolytope, PolygonWalkMatchesCombinatorialClipOnDegenerateCells) {
   EXPECT_GT(walked_q, 500);  // non-vacuous: the walk ran
   EXPECT_GT(walked_i, 200);
 }
+
+// double_filter::meet_lines_2d (the interval tier's new 2D vertices, issue 11 §4) must enclose the
+// meeting point of the two lines for EVERY point of the enclosures of their coefficients: judged
+// with exact rationals (Cramer's rule in Q, written out here) at all 64 corners, on random lines,
+// nearly parallel ones, and enclosures 0–3 ulps wide; non-vacuity: most cases are enclosed (not
+// refused), nearly parallel ones are refused, and the enclosures are narrow.
+TEST(WellspacedPolytope, MeetLines2DEnclosesTheExactMeetingPointAtEveryCorner) {
+  std::mt19937_64 g(17);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  std::uniform_int_distribution<int> W(0, 3);
+  int enclosed = 0, refused = 0;
+  double widest = 0;
+  for (int trial = 0; trial < 1500; ++trial) {
+    double a0 = U(g), a1 = U(g), e0 = U(g), e1 = U(g);
+    if (trial % 4 == 0) {  // nearly parallel: E = A turned by 2^-k
+      const double t = std::ldexp(1.0, -static_cast<int>(g() % 60));
+      e0 = a0 - t * a1;
+      e1 = a1 + t * a0;
+    }
+    if (trial % 9 == 0) a0 = std::ldexp(a0, -30);  // a small coefficient
+    const std::array<IntervalNT, 2> A{widen(a0, W(g), W(g)), widen(a1, W(g), W(g))};
+    const std::array<IntervalNT, 2> E{widen(e0, W(g), W(g)), widen(e1, W(g), W(g))};
+    const IntervalNT B = widen(U(g), W(g), W(g)), F = widen(U(g), W(g), W(g));
+    std::array<IntervalNT, 2> x;
+    try {
+      x = double_filter::meet_lines_2d(A, B, E, F);
+    } catch (const Uncertain&) {
+      ++refused;
+      continue;
+    }
+    const IntervalNT* in[6] = {&A[0], &A[1], &B, &E[0], &E[1], &F};
+    for (unsigned mask = 0; mask < 64; ++mask) {
+      Q c[6];
+      for (int i = 0; i < 6; ++i) c[i] = Q((mask >> i) & 1u ? in[i]->hi() : in[i]->lo());
+      const Q det = c[0] * c[4] - c[1] * c[3];
+      ASSERT_NE(det, 0) << "trial " << trial << ": an enclosure was given where the lines may be parallel";
+      const Q x0 = (c[2] * c[4] - c[1] * c[5]) / det, x1 = (c[0] * c[5] - c[2] * c[3]) / det;
+      ASSERT_TRUE(Q(x[0].lo()) <= x0 && x0 <= Q(x[0].hi())) << "trial " << trial << " corner " << mask;
+      ASSERT_TRUE(Q(x[1].lo()) <= x1 && x1 <= Q(x[1].hi())) << "trial " << trial << " corner " << mask;
+    }
+    for (const auto& xi : x) widest = std::max(widest, (xi.hi() - xi.lo()) / std::max(1.0, std::fabs(xi.lo())));
+    ++enclosed;
+  }
+  std::printf("meet_lines_2d: %d enclosed, %d refused, widest relative width %g\n", enclosed, refused, widest);
+  EXPECT_GT(enclosed, 1000);
+  EXPECT_GT(refused, 20);
+}
