@@ -7,8 +7,9 @@
 //    needed, and an operation whose result is a double gives a point interval (exact stays exact).
 //    fma's error terms are exact only away from underflow: products below 2^-900 in magnitude get
 //    the bound [0, 2^-899] (or its negative), never an exception — exact-tier filters use +, −, ×
-//    only and must not throw; divisions with an operand below 2^-900 throw Uncertain (found by
-//    fuzz/interval_nt).
+//    only and must not throw; divisions throw Uncertain when one of the two corner quotients
+//    they compute (the extremes, chosen by the operands' signs) has an operand below 2^-900 (found
+//    by fuzz/interval_nt).
 //  * Decisions are never guessed: sign(), <, <=, ==, ... return the answer that holds for every
 //    pair of points of the operands, and throw Uncertain when the operands do not decide it (overlap,
 //    division by an interval holding 0, overflow, or results too small for fma to certify).
@@ -75,14 +76,19 @@ class IntervalNT {
     return IntervalNT(lo, hi);
   }
   friend IntervalNT operator/(const IntervalNT& a, const IntervalNT& b) {
-    if (b.lo_ <= 0 && b.hi_ >= 0) throw_uncertain();
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (double x : {a.lo_, a.hi_})
-      for (double y : {b.lo_, b.hi_}) {
-        lo = std::min(lo, quot(x, y, -1));
-        hi = std::max(hi, quot(x, y, 1));
-      }
-    return IntervalNT(lo, hi);
+    // b does not straddle 0, so the signs tell which two corner quotients are the extremes
+    // (rounding is monotone): for b > 0 the quotient grows with a and, where a ≥ 0, falls with b
+    if (b.lo_ > 0) {
+      if (a.lo_ >= 0) return IntervalNT(quot(a.lo_, b.hi_, -1), quot(a.hi_, b.lo_, 1));
+      if (a.hi_ <= 0) return IntervalNT(quot(a.lo_, b.lo_, -1), quot(a.hi_, b.hi_, 1));
+      return IntervalNT(quot(a.lo_, b.lo_, -1), quot(a.hi_, b.lo_, 1));
+    }
+    if (b.hi_ < 0) {
+      if (a.lo_ >= 0) return IntervalNT(quot(a.hi_, b.hi_, -1), quot(a.lo_, b.lo_, 1));
+      if (a.hi_ <= 0) return IntervalNT(quot(a.hi_, b.lo_, -1), quot(a.lo_, b.hi_, 1));
+      return IntervalNT(quot(a.hi_, b.hi_, -1), quot(a.lo_, b.hi_, 1));
+    }
+    throw_uncertain();  // b holds 0
   }
   IntervalNT& operator+=(const IntervalNT& b) { return *this = *this + b; }
   IntervalNT& operator-=(const IntervalNT& b) { return *this = *this - b; }

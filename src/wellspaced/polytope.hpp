@@ -17,11 +17,13 @@
 #include <boost/multiprecision/gmp.hpp>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <type_traits>
 #include <vector>
 
 #include "geometry/point.hpp"
+#include "exact/error.hpp"
 #include "exact/interval_nt.hpp"
 #include "wellspaced/vertex_point.hpp"
 
@@ -30,6 +32,7 @@ namespace kmr::wellspaced {
 using Q = boost::multiprecision::mpq_rational;
 using exact::IntervalNT;
 using exact::Uncertain;
+using exact::throw_uncertain;
 
 template <std::size_t D>
 using QPoint = std::array<Q, D>;
@@ -176,6 +179,42 @@ inline int dist2_minus_sign(const IPoint<D>& x, const IPoint<D>& c, const Interv
   if (s < -e) return -1;
   return 0;
 }
+// Enclosure of the meeting point of the lines A·x = B and E·x = F (2D, Cramer's rule:
+// x = (B·E1 − A1·F, A0·F − B·E0) / (A0·E1 − A1·E0)) for every point of the enclosures, from
+// one evaluation in doubles at their lower ends (issue 11 §4: the new vertices of a 2D clip).
+// Each of the three 2×2 terms x·y − z·w is off by ≤ wx(|y'| + wy) + |x'|wy (+ the same for z·w)
+// from its value at any point of the enclosures, plus ≤ 3u(|x'y'| + |z'w'|) of rounding; for
+// |d − d'| ≤ Ed < |d'| and |n − n'| ≤ En, |n/d − n'/d'| ≤ (En + |n'/d'|·Ed) / (|d'| − Ed), and
+// q = fl(n'/d') is within u|q|·(1 + u) of n'/d'. The bound's own roundings are covered by the
+// factor 1 + 2^-40 (and 1 − 2^-40 on the denominator), underflow by 2^-1000 absolute; the
+// endpoints are then stepped outward by one double. Throws Uncertain when the determinant's
+// enclosure may hold 0, is tiny (< 2^-900), or anything is not finite.
+inline std::array<IntervalNT, 2> meet_lines_2d(const std::array<IntervalNT, 2>& A, const IntervalNT& B,
+                                              const std::array<IntervalNT, 2>& E, const IntervalNT& F) {
+  struct Term {
+    double v, err;
+  };
+  auto term = [](const IntervalNT& x, const IntervalNT& y, const IntervalNT& z, const IntervalNT& w) {
+    const double xl = x.lo(), yl = y.lo(), zl = z.lo(), wl = w.lo();
+    const double wx = x.hi() - xl, wy = y.hi() - yl, wz = z.hi() - zl, ww = w.hi() - wl;
+    const double p1 = xl * yl, p2 = zl * wl;
+    const double width = wx * (std::fabs(yl) + wy) + std::fabs(xl) * wy + wz * (std::fabs(wl) + ww) + std::fabs(zl) * ww;
+    return Term{p1 - p2, (width + 3 * 0x1p-53 * (std::fabs(p1) + std::fabs(p2))) * kSafety + kTinyAbs};
+  };
+  const Term d = term(A[0], E[1], A[1], E[0]);
+  const double ad = std::fabs(d.v);
+  if (!(ad >= 0x1p-900 && ad > 2 * d.err)) throw_uncertain();
+  const double denom = (ad - d.err) * (1 - 0x1p-40);  // ≤ |d| for every d of the enclosure
+  std::array<IntervalNT, 2> x;
+  const Term n[2] = {term(B, E[1], A[1], F), term(A[0], F, B, E[0])};
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double q = n[i].v / d.v, aq = std::fabs(q);
+    const double e = ((n[i].err + aq * (1 + 0x1p-52) * d.err) / denom + aq * 0x1p-52) * kSafety + kTinyAbs;
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    x[i] = IntervalNT::hull(std::nextafter(q - e, -inf), std::nextafter(q + e, inf));  // throws if not finite
+  }
+  return x;
+}
 }  // namespace double_filter
 
 template <std::size_t D, class NT = Q>
@@ -280,6 +319,14 @@ struct Polytope {
       c.set_enclosures();
       B.v.push_back(std::move(c));
     }
+    if constexpr (D == 2) {  // the cycle (lo,lo), (hi,lo), (hi,hi), (lo,hi), when lo < hi surely
+      bool full = true;
+      for (std::size_t i = 0; i < D; ++i) {
+        if constexpr (is_interval_v<NT>) full = full && lo[i].hi() < hi[i].lo();
+        else full = full && lo[i] < hi[i];
+      }
+      if (full) B.ring_ = {0, 1, 3, 2};
+    }
     return B;
   }
 
@@ -299,64 +346,30 @@ struct Polytope {
     return filtered_sign<NT>(dist2(xi, ci) - r2i, [&] { return dist2(x, c) - r2; });
   }
 
-  // Adds constraint hs (index = h.size() before the call) and clips. Returns its index.
+  // Adds constraint hs (index = h.size() before the call) and clips. Returns its index. In 2D,
+  // while the polygon is full-dimensional (the cells of §3.2.4 always are: their site is strictly
+  // inside every constraint), by walking its vertex cycle in O(V) (clip_polygon); otherwise, and in
+  // 3D/4D, by the combinatorial adjacency test (clip_generic). Both give the same vertices, in the
+  // same order, with the same tight sets (test PolygonWalkMatchesCombinatorialClipOnDegenerateCells).
   int clip(const Halfspace<D, NT>& hs) {
-    int j = add(hs);
-    std::vector<int>& sg = scratch_sign_;
-    sg.resize(v.size());
-    bool any_out = false;
-    for (std::size_t k = 0; k < v.size(); ++k) {
-      sg[k] = sign_at(static_cast<std::size_t>(j), v[k].x, v[k].xi);
-      any_out |= sg[k] > 0;
-    }
-    if (!any_out) {
-      for (std::size_t k = 0; k < v.size(); ++k)
-        if (sg[k] == 0) v[k].tight.push_back(j);
-      return j;
-    }
-    ++version;
-    std::vector<Vert>& out = scratch_verts_;  // reused: its vertices' storage stays allocated
-    out.clear();
-    TightSet common;
-    for (std::size_t p = 0; p < v.size(); ++p) {
-      if (sg[p] >= 0) continue;
-      for (std::size_t q = 0; q < v.size(); ++q) {
-        if (sg[q] <= 0) continue;
-        common.clear();
-        for (const int *a = v[p].tight.begin(), *ae = v[p].tight.end(), *b = v[q].tight.begin(), *be = v[q].tight.end();
-             a != ae && b != be;) {
-          if (*a < *b) ++a;
-          else if (*b < *a) ++b;
-          else {
-            common.push_back(*a);
-            ++a;
-            ++b;
-          }
-        }
-        if (common.size() + 1 < D) continue;
-        bool adjacent = true;
-        for (std::size_t r = 0; r < v.size() && adjacent; ++r) {
-          if (r == p || r == q) continue;
-          if (std::includes(v[r].tight.begin(), v[r].tight.end(), common.begin(), common.end())) adjacent = false;
-        }
-        if (!adjacent) continue;
-        Vert& nv = out.emplace_back();
-        NT sp = slack(hs, v[p].x), sq = slack(hs, v[q].x);
-        NT lam = sp / (sp - sq);
-        for (std::size_t i = 0; i < D; ++i) nv.x[i] = v[p].x[i] + (v[q].x[i] - v[p].x[i]) * lam;
-        nv.set_enclosures();
-        nv.tight = common;
-        nv.tight.push_back(j);
+    const int j = add(hs);
+    if (!cuts(j)) return j;
+    if constexpr (D == 2)
+      if (ring_.size() == v.size() && v.size() >= 3) {
+        clip_polygon(j);
+        return j;
       }
-    }
-    for (std::size_t k = 0; k < v.size(); ++k) {
-      if (sg[k] > 0) continue;
-      if (sg[k] == 0) v[k].tight.push_back(j);
-      out.push_back(std::move(v[k]));
-    }
-    std::swap(v, out);
+    clip_combinatorial(j);
     return j;
   }
+  // The same by the combinatorial adjacency test only (the reference of the 2D walk).
+  int clip_generic(const Halfspace<D, NT>& hs) {
+    const int j = add(hs);
+    if (cuts(j)) clip_combinatorial(j);
+    return j;
+  }
+  // The vertex cycle of a full-dimensional polygon (indices into v; empty when not known).
+  const std::vector<int>& ring() const { return ring_; }
 
   // x ∈ P? Constraints listed in `on` are known to be tight at x (not tested: in the exact tier
   // their slack is 0, in the interval tier it would straddle 0 and throw).
@@ -466,6 +479,142 @@ struct Polytope {
  private:
   std::vector<int> scratch_sign_;     // clip's signs, reused
   std::vector<Vert> scratch_verts_;  // clip's output, swapped with v (keeps both allocations)
+  std::vector<int> ring_;             // 2D: the vertex cycle while the polygon is full-dimensional
+  std::vector<int> scratch_index_;    // clip_polygon's new index of each kept vertex, reused
+  std::vector<int> scratch_ring_;     // clip_polygon's new cycle, swapped with ring_
+
+  // The signs of constraint j at the vertices (into scratch_sign_). When no vertex is strictly
+  // outside, records j as tight where it is and returns false (the vertex set is unchanged).
+  bool cuts(int j) {
+    std::vector<int>& sg = scratch_sign_;
+    sg.resize(v.size());
+    bool any_out = false;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      sg[k] = sign_at(static_cast<std::size_t>(j), v[k].x, v[k].xi);
+      any_out |= sg[k] > 0;
+    }
+    if (!any_out) {
+      for (std::size_t k = 0; k < v.size(); ++k)
+        if (sg[k] == 0) v[k].tight.push_back(j);
+      return false;
+    }
+    ++version;
+    return true;
+  }
+  // The vertex of edge pq (p strictly inside constraint j, q strictly outside) on constraint j:
+  // tight on the constraints common to p and q, and on j. In 2D the meeting point of the lines of
+  // j and of the edge by Cramer's rule (fewer operations, and not through p's and q's own
+  // roundings); else p + λ(q − p) with λ = s_p / (s_p − s_q). The same point in exact arithmetic.
+  void cut_edge(const Vert& p, const Vert& q, int j, const TightSet& common, Vert& nv) const {
+    const Halfspace<D, NT>& hs = h[static_cast<std::size_t>(j)].h;
+    if constexpr (D == 2) {
+      const Halfspace<D, NT>& e = h[static_cast<std::size_t>(*common.begin())].h;
+      if constexpr (is_interval_v<NT>) {  // one evaluation in doubles with an error bound
+        nv.x = double_filter::meet_lines_2d(hs.a, hs.b, e.a, e.b);
+      } else {
+        const NT det = hs.a[0] * e.a[1] - hs.a[1] * e.a[0];  // ≠ 0: the lines cross between p and q
+        nv.x[0] = (hs.b * e.a[1] - hs.a[1] * e.b) / det;
+        nv.x[1] = (hs.a[0] * e.b - hs.b * e.a[0]) / det;
+      }
+    } else {
+      NT sp = slack(hs, p.x), sq = slack(hs, q.x);
+      NT lam = sp / (sp - sq);
+      for (std::size_t i = 0; i < D; ++i) nv.x[i] = p.x[i] + (q.x[i] - p.x[i]) * lam;
+    }
+    nv.set_enclosures();
+    nv.tight = common;
+    nv.tight.push_back(j);
+  }
+  static void common_tight(const TightSet& a0, const TightSet& b0, TightSet& common) {
+    common.clear();
+    for (const int *a = a0.begin(), *ae = a0.end(), *b = b0.begin(), *be = b0.end(); a != ae && b != be;) {
+      if (*a < *b) ++a;
+      else if (*b < *a) ++b;
+      else {
+        common.push_back(*a);
+        ++a;
+        ++b;
+      }
+    }
+  }
+  // Any dimension: an edge pq is a pair of vertices tight on ≥ D − 1 common constraints with no
+  // third vertex tight on all of them. Output: the new vertices by (inside p, outside q) in index
+  // order, then the kept vertices in order.
+  void clip_combinatorial(int j) {
+    const std::vector<int>& sg = scratch_sign_;
+    ring_.clear();  // the order changes; the cycle is not tracked here
+    std::vector<Vert>& out = scratch_verts_;  // reused: its vertices' storage stays allocated
+    out.clear();
+    TightSet common;
+    for (std::size_t p = 0; p < v.size(); ++p) {
+      if (sg[p] >= 0) continue;
+      for (std::size_t q = 0; q < v.size(); ++q) {
+        if (sg[q] <= 0) continue;
+        common_tight(v[p].tight, v[q].tight, common);
+        if (common.size() + 1 < D) continue;
+        bool adjacent = true;
+        for (std::size_t r = 0; r < v.size() && adjacent; ++r) {
+          if (r == p || r == q) continue;
+          if (std::includes(v[r].tight.begin(), v[r].tight.end(), common.begin(), common.end())) adjacent = false;
+        }
+        if (!adjacent) continue;
+        cut_edge(v[p], v[q], j, common, out.emplace_back());
+      }
+    }
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      if (sg[k] > 0) continue;
+      if (sg[k] == 0) v[k].tight.push_back(j);
+      out.push_back(std::move(v[k]));
+    }
+    std::swap(v, out);
+  }
+  // 2D, full-dimensional polygon with its cycle ring_: the edges are the consecutive pairs of the
+  // cycle (a full-dimensional convex polygon's vertices are extreme and their tight sets complete,
+  // so the combinatorial test accepts exactly these), and a line crosses at most two of them. The
+  // output order is clip_combinatorial's: new vertices by (inside, outside) index, then the kept.
+  void clip_polygon(int j) {
+    const std::vector<int>& sg = scratch_sign_;
+    const std::size_t n = v.size();
+    struct Crossing {
+      int p, q;         // inside, outside vertex
+      std::size_t pos;  // the edge (ring_[pos], ring_[pos + 1])
+    };
+    std::array<Crossing, 2> cr;
+    std::size_t m = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const int a = ring_[i], b = ring_[i + 1 == n ? 0 : i + 1];
+      if (sg[a] * sg[b] >= 0) continue;
+      KMR_CHECK(m < 2, "a line crosses a convex polygon's boundary more than twice");
+      cr[m++] = sg[a] < 0 ? Crossing{a, b, i} : Crossing{b, a, i};
+    }
+    if (m == 2 && (cr[1].p < cr[0].p || (cr[1].p == cr[0].p && cr[1].q < cr[0].q))) std::swap(cr[0], cr[1]);
+    std::vector<Vert>& out = scratch_verts_;
+    out.clear();
+    TightSet common;
+    for (std::size_t c = 0; c < m; ++c) {
+      common_tight(v[static_cast<std::size_t>(cr[c].p)].tight, v[static_cast<std::size_t>(cr[c].q)].tight, common);
+      cut_edge(v[static_cast<std::size_t>(cr[c].p)], v[static_cast<std::size_t>(cr[c].q)], j, common, out.emplace_back());
+    }
+    std::vector<int>& idx = scratch_index_;
+    idx.assign(n, -1);
+    for (std::size_t k = 0; k < n; ++k) {
+      if (sg[k] > 0) continue;
+      if (sg[k] == 0) v[k].tight.push_back(j);
+      idx[k] = static_cast<int>(out.size());
+      out.push_back(std::move(v[k]));
+    }
+    std::vector<int>& nr = scratch_ring_;
+    nr.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      const int a = ring_[i];
+      if (idx[static_cast<std::size_t>(a)] >= 0) nr.push_back(idx[static_cast<std::size_t>(a)]);
+      for (std::size_t c = 0; c < m; ++c)
+        if (cr[c].pos == i) nr.push_back(static_cast<int>(c));
+    }
+    std::swap(v, out);
+    if (v.size() >= 3) std::swap(ring_, nr);
+    else ring_.clear();  // a segment or a point: no longer full-dimensional
+  }
   int add(const Halfspace<D, NT>& hs) {
     Constraint c{hs, enclose<NT, D>(hs.a), exact::enclose(hs.b)};
     h.push_back(std::move(c));

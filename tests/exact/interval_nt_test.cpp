@@ -90,3 +90,63 @@ TEST(IntervalNT, EncloseRationals) {
     ASSERT_LE(e.hi() - e.lo(), 4 * std::ldexp(std::fabs(e.approx()), -52) + 1e-300) << q;
   }
 }
+
+// Division picks two of the four corner quotients by the signs of the operands (issue 11 §4). The
+// expectation shares nothing with it: the four corner quotients as exact rationals, their min
+// rounded down and their max rounded up to doubles by stepping (the tightest hull of the corner
+// quotients, which the former four-quotient min/max computed). Random and sign-boundary operands:
+// endpoints 0 and −0, point intervals, a straddling 0, b touching 0 (must throw).
+namespace {
+double down_to_double(const Q& q) {  // the largest double ≤ q
+  double d = q.convert_to<double>();
+  while (Q(d) > q) d = std::nextafter(d, -INFINITY);
+  while (Q(std::nextafter(d, INFINITY)) <= q) d = std::nextafter(d, INFINITY);
+  return d;
+}
+double up_to_double(const Q& q) { return -down_to_double(-q); }
+IntervalNT ordered(double x, double y) { return IntervalNT::hull(std::min(x, y), std::max(x, y)); }
+}  // namespace
+
+TEST(IntervalNT, DivisionIsTheTightestHullOfTheCornerQuotients) {
+  std::mt19937_64 g(311);
+  std::uniform_real_distribution<double> u(-1, 1);
+  auto endpoint = [&] {
+    switch (g() % 6) {
+      case 0: return 0.0;
+      case 1: return -0.0;
+      case 2: return std::ldexp(u(g), static_cast<int>(g() % 40) - 20);
+      case 3: return std::ldexp(std::round(u(g) * 16), -3);  // exact small dyadics: exact quotients
+      default: return u(g);
+    }
+  };
+  int checked = 0, refused = 0;
+  int classes[2][3] = {};  // b's sign × a's class (≥ 0, ≤ 0, straddling)
+  for (int it = 0; it < 50000; ++it) {
+    IntervalNT a = ordered(endpoint(), it % 5 == 0 ? 0.0 : endpoint());
+    if (it % 7 == 0) a = IntervalNT(a.lo());  // a point
+    IntervalNT b = ordered(endpoint(), endpoint());
+    if (b.lo() <= 0 && b.hi() >= 0) {  // holds 0: refused
+      EXPECT_THROW((void)(a / b), Uncertain) << b.lo() << " " << b.hi();
+      ++refused;
+      continue;
+    }
+    Q lo, hi;
+    bool first = true;
+    for (double x : {a.lo(), a.hi()})
+      for (double y : {b.lo(), b.hi()}) {
+        Q q = Q(x) / Q(y);
+        if (first || q < lo) lo = q;
+        if (first || q > hi) hi = q;
+        first = false;
+      }
+    IntervalNT r = a / b;
+    ASSERT_EQ(r.lo(), down_to_double(lo)) << "[" << a.lo() << ", " << a.hi() << "] / [" << b.lo() << ", " << b.hi() << "]";
+    ASSERT_EQ(r.hi(), up_to_double(hi)) << "[" << a.lo() << ", " << a.hi() << "] / [" << b.lo() << ", " << b.hi() << "]";
+    ++classes[b.lo() > 0 ? 0 : 1][a.lo() >= 0 ? 0 : (a.hi() <= 0 ? 1 : 2)];
+    ++checked;
+  }
+  for (auto& row : classes)
+    for (int c : row) EXPECT_GT(c, 300);  // every sign case is reached often
+  EXPECT_GT(refused, 1000);
+  EXPECT_GT(checked, 10000);
+}

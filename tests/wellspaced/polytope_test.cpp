@@ -3,9 +3,13 @@
 
 #include "wellspaced/polytope.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 using namespace kmr::wellspaced;
@@ -130,4 +134,189 @@ TEST(WellspacedPolytope, DoubleFilterDecidesOnlyWhatEveryPointOfTheEnclosuresDec
   IPoint<2> a{IntervalNT(0.5), IntervalNT(0.25)}, x{IntervalNT(0.75), IntervalNT(0.5)};
   EXPECT_EQ(double_filter::dot_minus_sign<2>(a, x, IntervalNT(0.5)), 0);
   EXPECT_EQ(double_filter::dist2_minus_sign<2>(x, a, IntervalNT(0.125)), 0);
+}
+
+// The 2D walk of the vertex cycle (Polytope::clip, issue 11 §4) against the combinatorial
+// adjacency test (clip_generic, any dimension) on degenerate cells: after every cut both hold the
+// same vertices, in the same order, with the same tight sets (so every later decision is the same),
+// and the walk's cycle joins consecutive vertices by a common tight constraint.
+namespace {
+template <class NT>
+bool same_vertex(const typename Polytope<2, NT>::Vert& a, const typename Polytope<2, NT>::Vert& b) {
+  for (std::size_t i = 0; i < 2; ++i) {
+    if constexpr (std::is_same_v<NT, Q>) {
+      if (a.x[i] != b.x[i]) return false;
+    } else if (a.x[i].lo() != b.x[i].lo() || a.x[i].hi() != b.x[i].hi()) {
+      return false;
+    }
+  }
+  return std::vector<int>(a.tight.begin(), a.tight.end()) == std::vector<int>(b.tight.begin(), b.tight.end());
+}
+template <class NT>
+Halfspace<2, NT> in_nt(const Halfspace<2, Q>& h) {
+  Halfspace<2, NT> r;
+  for (std::size_t i = 0; i < 2; ++i) r.a[i] = NT(h.a[i].template convert_to<double>());
+  r.b = NT(h.b.template convert_to<double>());
+  return r;
+}
+// Clips `cuts` (all with dyadic coefficients, so both number types start from the same values)
+// into the box [lo, hi]² both ways; returns the number of cuts that went through the walk.
+template <class NT>
+int compare_walk(const std::vector<Halfspace<2, Q>>& cuts, double lo, double hi, const char* what) {
+  Polytope<2, NT> W = Polytope<2, NT>::box({NT(lo), NT(lo)}, {NT(hi), NT(hi)});
+  Polytope<2, NT> G = W;
+  int walked = 0;
+  for (std::size_t c = 0; c < cuts.size(); ++c) {
+    const bool walk = W.ring().size() == W.v.size() && W.v.size() >= 3;
+    const Halfspace<2, NT> h = in_nt<NT>(cuts[c]);
+    try {
+      W.clip(h);
+    } catch (const Uncertain&) {
+      return walked;  // the interval tier gave up; the exact tier is compared separately
+    }
+    G.clip_generic(h);
+    walked += walk;
+    EXPECT_EQ(W.v.size(), G.v.size()) << what << " cut " << c;
+    if (W.v.size() != G.v.size()) return walked;
+    for (std::size_t k = 0; k < W.v.size(); ++k)
+      EXPECT_TRUE(same_vertex<NT>(W.v[k], G.v[k])) << what << " cut " << c << " vertex " << k;
+    const auto& r = W.ring();
+    if (r.empty()) continue;
+    EXPECT_EQ(r.size(), W.v.size()) << what << " cut " << c;
+    std::vector<int> seen(r.begin(), r.end());
+    std::sort(seen.begin(), seen.end());
+    for (std::size_t k = 0; k < seen.size(); ++k) EXPECT_EQ(seen[k], static_cast<int>(k)) << what;
+    for (std::size_t k = 0; k < r.size(); ++k) {
+      const auto& a = W.v[static_cast<std::size_t>(r[k])].tight;
+      const auto& b = W.v[static_cast<std::size_t>(r[(k + 1) % r.size()])].tight;
+      bool share = false;
+      for (int t : a) share = share || std::find(b.begin(), b.end(), t) != b.end();
+      EXPECT_TRUE(share) << what << " cut " << c << ": cycle neighbours share no constraint";
+    }
+  }
+  return walked;
+}
+Halfspace<2, Q> bisector_q(long ux, long uy, long scale) {  // bisector of the origin and u/scale
+  return bisector_of_origin<2, Q>({Q(ux, scale), Q(uy, scale)});
+}
+}  // namespace
+
+TEST(WellspacedPolytope, PolygonWalkMatchesCombinatorialClipOnDegenerateCells) {
+  std::vector<std::pair<std::string, std::vector<Halfspace<2, Q>>>> families;
+  {  // grid: the 8 (and 24) neighbours of a grid point; 3 bisectors through each corner
+    std::vector<Halfspace<2, Q>> g;
+    for (int i = -2; i <= 2; ++i)
+      for (int j = -2; j <= 2; ++j)
+        if (i || j) g.push_back(bisector_q(i, j, 8));
+    families.push_back({"grid", g});
+    std::reverse(g.begin(), g.end());
+    families.push_back({"grid reversed", g});
+  }
+  {  // cocircular: the origin and 12 integer points on the circle of radius 5 about (5, 0): every
+     // bisector passes through the centre
+    std::vector<Halfspace<2, Q>> c;
+    for (auto [x, y] : std::vector<std::pair<int, int>>{{10, 0}, {5, 5}, {5, -5}, {1, 3}, {1, -3}, {2, 4},
+                                                        {2, -4}, {8, 4}, {8, -4}, {9, 3}, {9, -3}, {9, 0}})
+      if (x != 9 || y != 0) c.push_back(bisector_q(x, y, 16));
+    // and the 7 other integer points of the circle through the origin about (−1, 2) (radius² 5)
+    for (auto [x, y] : std::vector<std::pair<int, int>>{{-2, 4}, {1, 3}, {0, 4}, {-3, 1}, {-3, 3}, {1, 1}, {-2, 0}})
+      c.push_back(bisector_q(x, y, 16));
+    families.push_back({"cocircular", c});
+  }
+  {  // collinear: points on a line through the site and on a line beside it (parallel bisectors)
+    std::vector<Halfspace<2, Q>> l;
+    for (int k = 1; k <= 6; ++k) {
+      l.push_back(bisector_q(k, k, 16));
+      l.push_back(bisector_q(-k, -k, 16));
+      l.push_back(bisector_q(k, 3, 16));
+      l.push_back(bisector_q(-k, 3, 16));
+    }
+    families.push_back({"collinear", l});
+  }
+  {  // duplicate-plane cuts: the same bisector again, scaled, and cuts through two vertices
+    std::vector<Halfspace<2, Q>> d;
+    d.push_back(bisector_q(1, 0, 4));
+    d.push_back(bisector_q(1, 0, 4));
+    Halfspace<2, Q> twice = bisector_q(0, 1, 4);
+    d.push_back(twice);
+    for (auto& a : twice.a) a *= 2;
+    twice.b *= 2;
+    d.push_back(twice);
+    d.push_back(Halfspace<2, Q>{{Q(1), Q(1)}, Q(1, 4)});   // x + y ≤ 1/4: through (1/8, 1/8)
+    d.push_back(Halfspace<2, Q>{{Q(-1), Q(1)}, Q(1, 4)});  // through (1/8, ... ) and a box edge
+    d.push_back(bisector_q(-1, 0, 4));
+    d.push_back(Halfspace<2, Q>{{Q(1), Q(1)}, Q(1, 4)});
+    d.push_back(bisector_q(1, 1, 4));
+    d.push_back(Halfspace<2, Q>{{Q(1), Q(0)}, Q(-1, 8)});  // x ≤ −1/8: down to a segment
+    d.push_back(Halfspace<2, Q>{{Q(0), Q(1)}, Q(-1, 4)});  // then further (generic only)
+    families.push_back({"duplicate planes", d});
+  }
+  {  // random grid points in random order (seeded), cut into boxes about and beside the site
+    std::mt19937_64 g(5);
+    std::uniform_int_distribution<int> U(-6, 6);
+    for (int trial = 0; trial < 20; ++trial) {
+      std::vector<Halfspace<2, Q>> r;
+      for (int k = 0; k < 30; ++k) {
+        int x = U(g), y = U(g);
+        if (x || y) r.push_back(bisector_q(x, y, 16));
+      }
+      families.push_back({"random grid " + std::to_string(trial), r});
+    }
+  }
+  int walked_q = 0, walked_i = 0;
+  for (const auto& [name, cuts] : families) {
+    walked_q += compare_walk<Q>(cuts, -1, 1, name.c_str());
+    walked_q += compare_walk<Q>(cuts, 0, 1, name.c_str());  // the site on a corner of the box
+    walked_i += compare_walk<IntervalNT>(cuts, -1, 1, name.c_str());
+  }
+  std::printf("polygon walk: %d exact and %d interval cuts compared\n", walked_q, walked_i);
+  EXPECT_GT(walked_q, 500);  // non-vacuous: the walk ran
+  EXPECT_GT(walked_i, 200);
+}
+
+// double_filter::meet_lines_2d (the interval tier's new 2D vertices, issue 11 §4) must enclose the
+// meeting point of the two lines for EVERY point of the enclosures of their coefficients: judged
+// with exact rationals (Cramer's rule in Q, written out here) at all 64 corners, on random lines,
+// nearly parallel ones, and enclosures 0–3 ulps wide; non-vacuity: most cases are enclosed (not
+// refused), nearly parallel ones are refused, and the enclosures are narrow.
+TEST(WellspacedPolytope, MeetLines2DEnclosesTheExactMeetingPointAtEveryCorner) {
+  std::mt19937_64 g(17);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  std::uniform_int_distribution<int> W(0, 3);
+  int enclosed = 0, refused = 0;
+  double widest = 0;
+  for (int trial = 0; trial < 1500; ++trial) {
+    double a0 = U(g), a1 = U(g), e0 = U(g), e1 = U(g);
+    if (trial % 4 == 0) {  // nearly parallel: E = A turned by 2^-k
+      const double t = std::ldexp(1.0, -static_cast<int>(g() % 60));
+      e0 = a0 - t * a1;
+      e1 = a1 + t * a0;
+    }
+    if (trial % 9 == 0) a0 = std::ldexp(a0, -30);  // a small coefficient
+    const std::array<IntervalNT, 2> A{widen(a0, W(g), W(g)), widen(a1, W(g), W(g))};
+    const std::array<IntervalNT, 2> E{widen(e0, W(g), W(g)), widen(e1, W(g), W(g))};
+    const IntervalNT B = widen(U(g), W(g), W(g)), F = widen(U(g), W(g), W(g));
+    std::array<IntervalNT, 2> x;
+    try {
+      x = double_filter::meet_lines_2d(A, B, E, F);
+    } catch (const Uncertain&) {
+      ++refused;
+      continue;
+    }
+    const IntervalNT* in[6] = {&A[0], &A[1], &B, &E[0], &E[1], &F};
+    for (unsigned mask = 0; mask < 64; ++mask) {
+      Q c[6];
+      for (int i = 0; i < 6; ++i) c[i] = Q((mask >> i) & 1u ? in[i]->hi() : in[i]->lo());
+      const Q det = c[0] * c[4] - c[1] * c[3];
+      ASSERT_NE(det, 0) << "trial " << trial << ": an enclosure was given where the lines may be parallel";
+      const Q x0 = (c[2] * c[4] - c[1] * c[5]) / det, x1 = (c[0] * c[5] - c[2] * c[3]) / det;
+      ASSERT_TRUE(Q(x[0].lo()) <= x0 && x0 <= Q(x[0].hi())) << "trial " << trial << " corner " << mask;
+      ASSERT_TRUE(Q(x[1].lo()) <= x1 && x1 <= Q(x[1].hi())) << "trial " << trial << " corner " << mask;
+    }
+    for (const auto& xi : x) widest = std::max(widest, (xi.hi() - xi.lo()) / std::max(1.0, std::fabs(xi.lo())));
+    ++enclosed;
+  }
+  std::printf("meet_lines_2d: %d enclosed, %d refused, widest relative width %g\n", enclosed, refused, widest);
+  EXPECT_GT(enclosed, 1000);
+  EXPECT_GT(refused, 20);
 }
