@@ -179,7 +179,8 @@ Mesh construct(std::vector<InputPoint> points, const Dyadic& t) {
 
   // Stage 3: the Voronoi neighbours of every vertex, hence the Delaunay triangulation of M.
   std::uint64_t before = S.ops;
-  m.triangles = delaunay_from_candidates(m);
+  m.stars = voronoi_stars(m);
+  m.triangles = triangles_from_stars(m.stars);
   m.ops_delaunay = S.ops - before;
   return m;
 }

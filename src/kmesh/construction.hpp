@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "exact/integer.hpp"
+#include "kmesh/delaunay.hpp"
 #include "kmesh/spanner.hpp"
 
 namespace kmr::kmesh {
@@ -58,6 +59,7 @@ struct Mesh {
   std::vector<Considered> considered;
   std::vector<RankStats> ranks;
   std::vector<std::array<int, 3>> triangles;  // counter-clockwise, sorted
+  VoronoiStars stars;  // by id, from construct() (its stage 3); empty in Updater::mesh() (kept there)
   std::uint64_t ops_spanner = 0, ops_convert = 0, ops_delaunay = 0;
   std::size_t n() const { return input.size(); }
   std::size_t size() const { return info.size(); }

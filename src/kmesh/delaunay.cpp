@@ -1,7 +1,6 @@
 #include "kmesh/delaunay.hpp"
 
 #include <algorithm>
-#include <map>
 
 #include "exact/error.hpp"
 #include "geometry/predicates.hpp"
@@ -13,56 +12,56 @@ namespace {
 
 int orient(const Point2& a, const Point2& b, const Point2& c) { return geometry::orientation<Dyadic>(a, b, c); }
 
-// Filtered forms over vertex ids with cached enclosures.
+// The exact in-circle test, perturbed (spec/kmesh.md) when the four points are cocircular.
+int perturbed(const Point2& p, const Point2& q, const Point2& r, const Point2& t, bool p_max, bool q_max,
+              bool r_max) {
+  int s = geometry::side_of_oriented_circle<Dyadic>(p, q, r, t);
+  if (s != 0) return s;
+  // Cocircular: the highest lifted vertex is outside the circle of the other three. By antisymmetry
+  // of the lifted determinant: t highest → −orient(p,q,r); r → orient(p,q,t); q → orient(p,t,r);
+  // p → orient(t,q,r).
+  if (r_max) return orient(p, q, t);
+  if (q_max) return orient(p, t, r);
+  if (p_max) return orient(t, q, r);
+  return -orient(p, q, r);
+}
+
+// Filtered forms over the spanner's vertex ids, with its cached enclosures.
 struct Geo {
-  const std::vector<Point2>& p;
-  const std::vector<IPoint>& e;
-  int orient(int a, int b, int c) const { return orientation_filtered(p[a], e[a], p[b], e[b], p[c], e[c]); }
+  const Spanner& S;
+  const LiftOrder& lower;
+  const Point2& p(int i) const { return S.position(i); }
+  const IPoint& e(int i) const { return S.enclosure(i); }
+  bool below(int a, int b) const { return lower ? lower(a, b) : a < b; }
+  int orient(int a, int b, int c) const { return orientation_filtered(p(a), e(a), p(b), e(b), p(c), e(c)); }
   int incircle(int a, int b, int c, int t) const {
-    int s = side_of_circle_filtered(p[a], e[a], p[b], e[b], p[c], e[c], p[t], e[t]);
-    return s != 0 ? s : perturbed_side_of_circle(p[a], a, p[b], b, p[c], c, p[t], t);
+    int s = side_of_circle_filtered(p(a), e(a), p(b), e(b), p(c), e(c), p(t), e(t));
+    if (s != 0) return s;
+    int m = a;
+    for (int x : {b, c, t})
+      if (below(m, x)) m = x;
+    return perturbed(p(a), p(b), p(c), p(t), m == a, m == b, m == c);
   }
 };
 
-}  // namespace
-
-int perturbed_side_of_circle(const Point2& p, int ip, const Point2& q, int iq, const Point2& r, int ir,
-                             const Point2& t, int it) {
-  int s = geometry::side_of_oriented_circle<Dyadic>(p, q, r, t);
-  if (s != 0) return s;
-  // Cocircular: the largest id is lifted highest, i.e. it is outside the circle of the other three.
-  // By antisymmetry of the lifted determinant: t largest → −orient(p,q,r); r → orient(p,q,t);
-  // q → orient(p,t,r); p → orient(t,q,r).
-  int m = std::max({ip, iq, ir, it});
-  if (m == it) return -orient(p, q, r);
-  if (m == ir) return orient(p, q, t);
-  if (m == iq) return orient(p, t, r);
-  return orient(t, q, r);
-}
-
-std::vector<int> delaunay_star(int s, const std::vector<int>& cands, const std::vector<Point2>& pos,
-                               bool& closed, std::uint64_t& ops) {
-  std::vector<IPoint> e(pos.size());
-  for (int c : cands) e[c] = enclose(pos[c]);
-  e[s] = enclose(pos[s]);
-  return delaunay_star(s, cands, pos, e, closed, ops);
-}
-
-std::vector<int> delaunay_star(int s, const std::vector<int>& cands, const std::vector<Point2>& pos,
-                               const std::vector<IPoint>& enc, bool& closed, std::uint64_t& ops) {
-  Geo g{pos, enc};
-  closed = false;
-  std::vector<int> out;
+// The ccw neighbours of s among cands in the perturbed Delaunay triangulation of cands ∪ {s}.
+VoronoiStar star_of(const Geo& g, int s, const std::vector<int>& cands) {
+  VoronoiStar out;
   if (cands.empty()) return out;
-  const Point2& ps = pos[s];
   int a0 = -1;
-  for (int c : cands)  // cands sorted: ties keep the smaller id
-    if (a0 < 0 || compare_distance(ps, enc[s], pos[c], enc[c], pos[a0], enc[a0]) < 0) a0 = c;
+  for (int c : cands) {
+    if (a0 < 0) {
+      a0 = c;
+      continue;
+    }
+    int d = compare_distance(g.p(s), g.e(s), g.p(c), g.e(c), g.p(a0), g.e(a0));
+    if (d < 0 || (d == 0 && g.below(c, a0))) a0 = c;
+  }
   // side = +1: the triangle (s, a, b) left of s→a; side = −1: the triangle (s, b, a) right of it.
   auto next = [&](int a, int side) {
     int best = -1;
     for (int c : cands) {
-      ++ops;
+      ++g.S.ops;
       if (c == a || g.orient(s, a, c) != side) continue;
       if (best < 0) {
         best = c;
@@ -73,16 +72,17 @@ std::vector<int> delaunay_star(int s, const std::vector<int>& cands, const std::
     }
     return best;
   };
-  out.push_back(a0);
+  std::vector<int>& ring = out.ring;
+  ring.push_back(a0);
   for (int a = a0;;) {
     int b = next(a, +1);
     if (b < 0) break;
     if (b == a0) {
-      closed = true;
+      out.closed = true;
       return out;
     }
-    KMR_CHECK(out.size() <= cands.size(), "delaunay_star: the walk does not close");
-    out.push_back(b);
+    KMR_CHECK(ring.size() <= cands.size(), "voronoi_star: the walk does not close");
+    ring.push_back(b);
     a = b;
   }
   // s is on the hull: walk clockwise from a0 as well.
@@ -90,47 +90,65 @@ std::vector<int> delaunay_star(int s, const std::vector<int>& cands, const std::
   for (int a = a0;;) {
     int b = next(a, -1);
     if (b < 0) break;
-    KMR_CHECK(cw.size() <= cands.size(), "delaunay_star: the clockwise walk does not end");
+    KMR_CHECK(cw.size() <= cands.size(), "voronoi_star: the clockwise walk does not end");
     cw.push_back(b);
     a = b;
   }
   std::reverse(cw.begin(), cw.end());
-  cw.insert(cw.end(), out.begin(), out.end());
-  return cw;
+  cw.insert(cw.end(), ring.begin(), ring.end());
+  ring = std::move(cw);
+  return out;
 }
 
-std::vector<std::array<int, 3>> delaunay_from_candidates(Mesh& m) {
-  const Spanner& S = m.spanner;
-  const int N = static_cast<int>(S.size());
-  std::vector<Point2> pos(N);
-  std::vector<IPoint> enc(N);
-  for (int i = 0; i < N; ++i) pos[i] = S.position(i), enc[i] = S.enclosure(i);
-  std::map<std::array<int, 3>, int> seen;
-  for (int s = 0; s < N; ++s) {
-    Rank l = m.info[s].rank;
-    std::vector<int> V;
-    for (Rank r = l - 6; r <= l - 3; ++r)
-      for (int x : S.neighbors(s, r)) {
-        ++S.ops;
-        if (within_filtered(pos[s], enc[s], pos[x], enc[x], 9, l - 2)) V.push_back(x);
-      }
-    std::sort(V.begin(), V.end());
-    V.erase(std::unique(V.begin(), V.end()), V.end());
-    bool closed = false;
-    std::vector<int> star = delaunay_star(s, V, pos, enc, closed, S.ops);
-    std::size_t k = star.size();
-    for (std::size_t i = 0; i + 1 < k || (closed && i < k); ++i) {
-      std::array<int, 3> t{s, star[i], star[(i + 1) % k]};
+}  // namespace
+
+int perturbed_side_of_circle(const Point2& p, int ip, const Point2& q, int iq, const Point2& r, int ir,
+                             const Point2& t, int it) {
+  int m = std::max({ip, iq, ir, it});
+  return perturbed(p, q, r, t, m == ip, m == iq, m == ir);
+}
+
+VoronoiStar voronoi_star(const Spanner& S, int s, Rank l, const LiftOrder& lower) {
+  std::vector<int> V;
+  const Point2& ps = S.position(s);
+  const IPoint& es = S.enclosure(s);
+  for (Rank r = l - 6; r <= l - 3; ++r)
+    for (int x : S.neighbors(s, r)) {
+      ++S.ops;
+      if (within_filtered(ps, es, S.position(x), S.enclosure(x), 9, l - 2)) V.push_back(x);
+    }
+  std::sort(V.begin(), V.end());
+  V.erase(std::unique(V.begin(), V.end()), V.end());
+  return star_of(Geo{S, lower}, s, V);
+}
+
+std::vector<std::array<int, 3>> triangles_from_stars(const VoronoiStars& stars, const std::vector<int>& new_id) {
+  auto id = [&](int x) { return new_id.empty() ? x : new_id[x]; };
+  std::vector<std::array<int, 3>> all;
+  for (std::size_t s = 0; s < stars.size(); ++s) {
+    const std::vector<int>& ring = stars[s].ring;
+    const std::size_t k = ring.size();
+    for (std::size_t i = 0; i + 1 < k || (stars[s].closed && i < k); ++i) {
+      std::array<int, 3> t{id(static_cast<int>(s)), id(ring[i]), id(ring[(i + 1) % k])};
       std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-      ++seen[t];
+      all.push_back(t);
     }
   }
+  std::sort(all.begin(), all.end());
   std::vector<std::array<int, 3>> out;
-  for (auto& [t, c] : seen) {
-    KMR_CHECK(c == 3, "IdentifyVoronoiNeighbors: a triangle is not found from all its corners (Lemma 4.2.9)");
-    out.push_back(t);
+  for (std::size_t i = 0; i < all.size(); i += 3) {
+    KMR_CHECK(i + 2 < all.size() && all[i] == all[i + 2] && (i + 3 == all.size() || all[i + 3] != all[i]),
+              "IdentifyVoronoiNeighbors: a triangle is not found from all its corners (Lemma 4.2.9)");
+    out.push_back(all[i]);
   }
   return out;
+}
+
+VoronoiStars voronoi_stars(const Mesh& m) {
+  const Spanner& S = m.spanner;
+  VoronoiStars stars(S.size());
+  for (int s = 0; s < static_cast<int>(S.size()); ++s) stars[s] = voronoi_star(S, s, m.info[s].rank);
+  return stars;
 }
 
 }  // namespace kmr::kmesh

@@ -185,19 +185,20 @@ void KineticMesh::isolate(const Key& key, Kept& k, const Dyadic& T) {
 // The first lattice interval (counted from now) before T in which a kept certificate changes sign,
 // and every kept certificate failing there. Roots are isolated only for the certificates whose
 // cached answer does not cover [now, T): new ones, and those whose failure is behind now.
-std::optional<std::pair<exact::Integer, std::vector<const KineticMesh::Kept*>>> KineticMesh::next_failures(
-    const Dyadic& T) {
+std::optional<std::pair<exact::Integer, std::vector<const std::pair<const KineticMesh::Key, KineticMesh::Kept>*>>>
+KineticMesh::next_failures(const Dyadic& T) {
   std::optional<exact::Integer> best;
-  std::vector<const Kept*> failed;
+  std::vector<const std::pair<const Key, Kept>*> failed;
   const Dyadic start = now().shifted(bits_);
   if (!start.is_integer()) {  // now is not a lattice point: the lattice is taken from now, no cache
-    for (auto& [key, k] : certs_) {
+    for (auto& e : certs_) {
+      const Kept& k = e.second;
       if (k.cert.value.degree() <= 0) continue;
       poly::LatticeRootSolver s(shifted_by_dyadic(k.cert.value, now()), bits_);
       auto f = s.next_failure_after(Dyadic(0), T - now());
       if (!f || (best && *f > *best)) continue;
       if (!best || *f < *best) best = f, failed.clear();
-      failed.push_back(&k);
+      failed.push_back(&e);
     }
     if (!best) return std::nullopt;
     return std::pair{*best, failed};
@@ -215,7 +216,7 @@ std::optional<std::pair<exact::Integer, std::vector<const KineticMesh::Kept*>>> 
   }
   if (queue_.empty() || !(Dyadic(queue_.begin()->first, -bits_) < T)) return std::nullopt;
   const exact::Integer K = queue_.begin()->first;
-  for (auto it = queue_.begin(); it != queue_.end() && it->first == K; ++it) failed.push_back(&certs_.at(it->second));
+  for (auto it = queue_.begin(); it != queue_.end() && it->first == K; ++it) failed.push_back(&*certs_.find(it->second));
   return std::pair{K - k0, failed};
 }
 
@@ -272,17 +273,25 @@ void KineticMesh::run_until(const Dyadic& T, const std::function<void(const Batc
       break;
     }
     // The nuclei of the vertices of the failed certificates (ids of mesh_; an end of an S_N
-    // certificate is an input vertex, its own nucleus). Delaunay failures change no vertex of M.
+    // certificate is an input vertex, its own nucleus). Delaunay failures change no vertex of M:
+    // their vertices' stars are repaired (Updater::voronoi_repair, at the next mesh()).
     std::set<int> nuclei;
+    std::vector<int> voronoi;
     auto& [k, failed] = *nb;
-    for (const Kept* f : failed) {
-      const Kept& c = *f;
-      if (c.cert.kind == Certificate::Delaunay) continue;
+    for (const auto* f : failed) {
+      const Kept& c = f->second;
+      if (c.cert.kind == Certificate::Delaunay) {
+        auto [kind, form, a, b, x, y] = f->first;  // a triangle (a, b, x) or an edge (a, b) with apexes x, y
+        for (int cv : {a, b, x, y})
+          if (cv >= 0) voronoi.push_back(mesh_id_of_[cv]);
+        continue;
+      }
       nuclei.insert(mesh_.info[mesh_id_of_[c.end_a]].nucleus);
       nuclei.insert(mesh_.info[mesh_id_of_[c.end_b]].nucleus);
     }
     std::vector<InputPoint> moved;
     for (int v : nuclei) moved.push_back(mesh_.input[v]);
+    upd_.voronoi_certificates_failed(voronoi);
     upd_.advance_to(now() + Dyadic(k + 1, -bits_));
     if (!moved.empty()) upd_.relocate(moved);
     events_ += failed.size();

@@ -26,9 +26,11 @@
 //    (the recomputation takes the nearest vertex at now) — tested in kds_test.cpp.
 // Deviations (spec/kmesh.md): F_ℓ of a kinetic batch is every satellite of the nuclei involved
 // (not only the satellites of the failed certificates), so the work per event is O(log Δ) times the
-// affected nuclei; the renumbering, the Delaunay stage and the enumeration of the certificates'
-// names are still global after a batch (O(|M|), integer work; counted apart from the local
-// operations of Fig. 4.5); building polynomials and isolating roots is done for new names only.
+// affected nuclei; the Delaunay stage is local (the vertices of the failed Delaunay certificates are
+// reported to the Updater, whose voronoi_repair recomputes their stars and their neighbours'); the
+// renumbering and the enumeration of the certificates' names are still global after a batch
+// (O(|M|), integer work; counted apart from the local operations of Fig. 4.5); building
+// polynomials and isolating roots is done for new names only.
 #include <functional>
 #include <map>
 #include <optional>
@@ -88,7 +90,8 @@ class KineticMesh {
   // before horizon T; isolates its roots only when the cached answer does not cover [now, T).
   void unqueue(const Key& key, const Kept& k);
   void isolate(const Key& key, Kept& k, const Dyadic& T);  // from now, far ahead; queues it
-  std::optional<std::pair<exact::Integer, std::vector<const Kept*>>> next_failures(const Dyadic& T);
+  std::optional<std::pair<exact::Integer, std::vector<const std::pair<const Key, Kept>*>>> next_failures(
+      const Dyadic& T);
   int bits_;
   Updater upd_;
   Mesh mesh_, sn_mesh_;

@@ -42,6 +42,8 @@ Updater::Updater(std::vector<InputPoint> points, const Dyadic& t) : now_(t) {
       set_witness(k, w);
     }
   }
+  stars_ = std::move(m.stars);  // the construction's stage 3
+  stars_.resize(S_.size());
   S_.touched.clear();
   SN_.touched.clear();
 }
@@ -129,6 +131,7 @@ void Updater::remove_steiner(const Key& k) {
   mark(k);
   int x = st.vertex;
   S_.remove(x);
+  touch_delaunay(x);
   info_[x] = VertexInfo{};
   st.converted = false;
   st.vertex = -1;
@@ -190,6 +193,7 @@ void Updater::decide(const Key& k) {
   mark(k);
   remove_balls_containing(s, l);
   int id = S_.insert_point(s);
+  touch_delaunay(id);
   if (static_cast<std::size_t>(id) >= info_.size()) info_.resize(id + 1);
   info_[id] = VertexInfo{true, v, l, ray};
   Sat& st = sats_.at(k);
@@ -306,6 +310,7 @@ void Updater::insert_stage1(const InputPoint& p) {
   sn_to_key_[sn] = key;
   remove_balls_containing(pos, lowest_ - 1);  // lowest_: no satellite was ever considered below it
   int sid = S_.insert_point(pos);
+  touch_delaunay(sid);
   if (static_cast<std::size_t>(sid) >= info_.size()) info_.resize(sid + 1);
   info_[sid] = VertexInfo{false, key, 0, -1};
   inputs_[key] = Input{p, sid, sn, kNoRank};
@@ -336,6 +341,7 @@ void Updater::erase_stage1(std::map<int, Input>::iterator it) {
   }
   inputs_.erase(it);
   S_.remove(in.s);
+  touch_delaunay(in.s);
   info_[in.s] = VertexInfo{};
   if (auto w = witness_of_.find(in.s); w != witness_of_.end()) {
     for (const Key& kk : w->second) {
@@ -464,10 +470,49 @@ Mesh Updater::mesh() {
   for (auto& r : m.ranks) r.active = r.considered / 12;
   m.lowest = m.ranks.empty() ? 0 : m.ranks.front().rank;
   m.highest = highest_ == kNoHighest ? 0 : highest_;
-  std::uint64_t before = m.spanner.ops;
-  if (n >= 2) m.triangles = delaunay_from_candidates(m);
-  last_.ops_delaunay = m.spanner.ops - before;
+  s_id_of_mesh_.assign(m.size(), -1);
+  for (int x = 0; x < static_cast<int>(S_.size()); ++x)
+    if (new_id[x] >= 0) s_id_of_mesh_[new_id[x]] = x;
+  std::uint64_t before = S_.ops;
+  voronoi_repair();
+  if (n >= 2) m.triangles = triangles_from_stars(stars_, new_id);
+  last_.ops_delaunay = S_.ops - before;
   return m;
+}
+
+void Updater::voronoi_certificates_failed(const std::vector<int>& mesh_ids) {
+  for (int v : mesh_ids) touch_delaunay(s_id_of_mesh_.at(v));
+}
+
+bool Updater::canonical_less(int a, int b) const {
+  const VertexInfo &A = info_[a], &B = info_[b];
+  if (A.steiner != B.steiner) return !A.steiner;
+  if (!A.steiner) return S_.position(a) < S_.position(b);
+  if (A.rank != B.rank) return A.rank < B.rank;
+  if (A.nucleus != B.nucleus) return S_.position(inputs_.at(A.nucleus).s) < S_.position(inputs_.at(B.nucleus).s);
+  return A.ray < B.ray;
+}
+
+// Stage 3 of Fig. 4.5, locally (see the header): the touched vertices' stars, then those of their
+// neighbours before (the stars kept) and after (the stars just recomputed). A vertex's star is
+// IdentifyVoronoiNeighbors on its candidates (kmesh/delaunay.hpp), as in the construction.
+void Updater::voronoi_repair() {
+  stars_.resize(S_.size());
+  last_.stars = 0;
+  std::set<int> around;
+  for (int x : delaunay_touched_) around.insert(stars_[x].ring.begin(), stars_[x].ring.end());
+  const LiftOrder lower = [this](int a, int b) { return canonical_less(a, b); };
+  auto redo = [&](int x) {
+    stars_[x] = S_.alive(x) ? voronoi_star(S_, x, info_[x].rank, lower) : VoronoiStar{};
+    ++last_.stars;
+  };
+  for (int x : delaunay_touched_) {
+    redo(x);
+    around.insert(stars_[x].ring.begin(), stars_[x].ring.end());
+  }
+  for (int y : around)
+    if (!delaunay_touched_.count(y)) redo(y);
+  delaunay_touched_.clear();
 }
 
 }  // namespace kmr::kmesh

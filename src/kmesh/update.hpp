@@ -24,8 +24,19 @@
 // Deviations from the thesis (spec/kmesh.md): a Steiner vertex enters the spanner by the general
 // insertion (its top is the rank below the lowest covering one) instead of Convert's ℓ−2 … ℓ plus
 // TryToPromote, and the partially affected set P_ℓ is the spanner's own orphan repair (re-parent or
-// promote) inside Remove; Λ (the top rank Λ+4) is recomputed by a scan over the input (O(n)); the
-// Delaunay stage recomputes every star (global, O(|M|)), counted apart from the local stages.
+// promote) inside Remove; Λ (the top rank Λ+4) is recomputed by a scan over the input (O(n)).
+//
+// Stage 3 (the Voronoi neighbours, Fig. 4.5's last step) is local: the stars of the Delaunay
+// triangulation are kept by spanner id, and only those that may have changed are recomputed
+// (voronoi_repair): the vertices touched since the last repair — every vertex inserted or removed,
+// and every vertex of a failed halfspace (Delaunay) certificate (KineticMesh reports them) — and
+// their neighbours before and after. Why that suffices: an edge zw of the new triangulation that
+// was not in the old one has an empty circle that held a removed vertex, and shrinking it at z gives
+// an old edge from z to a removed vertex; symmetrically an old edge that is gone gives a new edge
+// from z to an inserted vertex; motion between batches changes edges only through failed
+// certificates. Stars are computed with the canonical lift order of mesh()'s numbering, so the
+// triangles equal those of a from-scratch construction (tested in tests/kmesh/kds_test.cpp). The
+// renumbering and the listing of the output stay global (O(|M|) integer work).
 #include <cstdint>
 #include <map>
 #include <set>
@@ -39,7 +50,8 @@ struct UpdateStats {
   std::size_t affected = 0;   // satellites taken from the F_ℓ sets (with repeats over ranks)
   std::size_t removed = 0, converted = 0, ranks = 0;
   std::uint64_t ops = 0;          // spanner and propagation operations of stages 1–2 (local)
-  std::uint64_t ops_delaunay = 0; // stage 3 (global here)
+  std::uint64_t ops_delaunay = 0; // stage 3 of the last mesh() (local: voronoi_repair)
+  std::size_t stars = 0;          // stars recomputed by that voronoi_repair
 };
 
 class Updater {
@@ -64,9 +76,13 @@ class Updater {
   // S_N (the spanner over the input alone, whose minimum ranks are the activation ranks) as a mesh
   // without satellites, numbered like mesh()'s inputs: its certificates are the kinetic ones of ρ.
   Mesh input_spanner_mesh() const;
+  // The vertices (ids of the last mesh()) of failed halfspace (Delaunay) certificates: their stars,
+  // and their neighbours', are recomputed at the next mesh() (kmesh/kds.hpp, after a batch).
+  void voronoi_certificates_failed(const std::vector<int>& mesh_ids);
   // The current mesh, renumbered canonically (inputs sorted, then Steiner vertices by rank, nucleus,
   // ray), with its Delaunay triangulation (stage 3) and `considered` rebuilt from the records
-  // (`existing` = the vertices of lower rank, so L4.2.5 reads as U2).
+  // (`existing` = the vertices of lower rank, so L4.2.5 reads as U2). Stage 3 runs here
+  // (voronoi_repair), so the stars are repaired once for all the changes since the last call.
   Mesh mesh();
   const UpdateStats& last() const { return last_; }
   std::size_t input_size() const { return inputs_.size(); }
@@ -106,6 +122,11 @@ class Updater {
   void erase_stage1(std::map<int, Input>::iterator it);
   void insert_stage1(const InputPoint& p);
   std::vector<std::pair<Point2, int>> canonical_inputs() const;  // (position at now, key), sorted
+  // Stage 3: a vertex whose star may have changed (inserted, removed, or in a failed halfspace
+  // certificate); voronoi_repair recomputes its star and its old and new neighbours'.
+  void touch_delaunay(int x) { delaunay_touched_.insert(x); }
+  void voronoi_repair();
+  bool canonical_less(int a, int b) const;  // a before b in mesh()'s numbering (the lift order)
 
   std::vector<InputPoint> sorted_;  // the live input (for messages and rebuilds)
   std::map<int, Input> inputs_;     // by input key (stable: the first ids are the sorted input)
@@ -118,6 +139,9 @@ class Updater {
   std::map<Rank, std::set<Key>> F_;
   std::map<int, std::set<Key>> by_nucleus_;
   std::map<std::pair<Rank, int>, bool> before_;  // (rank, nucleus) → had a converted satellite there
+  VoronoiStars stars_;             // per id of S: its Delaunay star (empty when dead)
+  std::set<int> delaunay_touched_;  // ids of S touched since the last voronoi_repair
+  std::vector<int> s_id_of_mesh_;   // the last mesh()'s ids → ids of S
   Rank lowest_ = 0, highest_ = 0;
   Dyadic now_{0};
   UpdateStats last_;
