@@ -73,17 +73,18 @@ summary() {  # summary LABEL PREFIX...
       lp = lf ? 100 * lh / lf : 0; bp = bf ? 100 * bh / bf : 0; gp = gf ? 100 * gh / gf : 0
       printf "%-12s lines %6.2f%% (%d/%d)   branches %6.2f%% (%d/%d)   without contract checks %6.2f%% (%d/%d)\n",
              label, lp, lh, lf, bp, bh, bf, gp, gh, gf
-      printf "%.2f %.2f %.2f\n", lp, bp, gp > "/dev/stderr"
+      # the gate compares the unrounded ratios: 84.996 % prints as 85.00 but fails 85 (rel9)
+      printf "%.2f %.2f %.2f %.17g %.17g\n", lp, bp, gp, lp, bp > "/dev/stderr"
     }' "$all" "$gated"
 }
 for layer in src/*/; do
   summary "${layer%/}" "$PWD/$layer" 2>/dev/null
 done
 summary "src (all)" "$PWD/src/" 2>/dev/null
-read -r lines branches gated_branches < <(summary "src (all)" "$PWD/src/" 2>&1 >/dev/null)
+read -r lines branches gated_branches exact_lines exact_branches < <(summary "src (all)" "$PWD/src/" 2>&1 >/dev/null)
 echo "HTML report: coverage/out/index.html"
 ((tests_ok)) || { echo "FAIL: some tests failed (ctest output above); coverage reported anyway"; exit 1; }
-if awk -v l="$lines" -v b="$branches" -v tl="$threshold" -v tb="$branch_threshold" 'BEGIN { exit !(l < tl || b < tb) }'; then
+if awk -v l="$exact_lines" -v b="$exact_branches" -v tl="$threshold" -v tb="$branch_threshold" 'BEGIN { exit !(l < tl || b < tb) }'; then
   echo "FAIL: src/ coverage lines ${lines}% (need ${threshold}%), branches ${branches}% (need ${branch_threshold}%; without contract checks ${gated_branches}%)"
   exit 1
 fi
