@@ -73,7 +73,7 @@ OmGroup* OrderList::insert_group_after(OmGroup* g) {
         done = true;
       }
     }
-    if (!done) {  // more groups than the label space allows at this density: spread them all (untested: i = 62 takes every group up to 1.41^62 ≈ 1.78·10^9 groups, ≥ 10^11 stamps)
+    if (!done) {  // more groups than the label space allows at this density: spread them all (untested: i = 62 takes up to 1.41^62 ≈ 1.78·10^9 groups)
       std::uint64_t step = kTopEnd / (groups_ + 2), l = step;
       for (OmGroup* t = first_group_; t; t = t->next, l += step) {
         t->label = l;
