@@ -185,7 +185,7 @@ class Filter {
   // cbrt within a few ulps, so the factor 1 + 2^−20 covers every rounding.
   std::optional<std::int64_t> root_bound_index() const {
     const int n_ = N >= 0 ? N : this->n_;
-    if (n_ < 1 || c_[n_] == 0) return std::nullopt;
+    if (n_ < 1) return std::nullopt;  // c_[n_] ≠ 0: the double of a nonzero integer is at least 1 in magnitude
     const double lead = std::fabs(c_[n_]);
     double m = 0;
     for (int i = 1; i <= n_; ++i) {
@@ -295,8 +295,7 @@ std::int64_t root_free_until(const MachinePolynomial& p, int bits, std::int64_t 
   int e = 1 << 20;
   const int elo = floor_log2(lo);
   for (int i = 1; i <= n; ++i) {
-    if (!(U[i] > 0)) continue;
-    if (!std::isfinite(U[i])) return from;
+    if (!(U[i] > 0)) continue;  // U_i is finite: A < 2^53 and |c_j| < 2^127 keep it below 2^236
     const int d = elo - floor_log2(U[i]) - 4;  // lo/(8·U_i) ≥ 2^d
     e = std::min(e, d >= 0 ? d / i : -((-d + i - 1) / i));  // ⌊d/i⌋
   }

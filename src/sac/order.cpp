@@ -95,8 +95,9 @@ OmGroup* OrderList::insert_group_after(OmGroup* g) {
 }
 
 void OrderList::remove_group(OmGroup* g) {
-  if (g->prev) g->prev->next = g->next;
-  else first_group_ = g->next;
+  // Never the first group: that one holds the base stamp, which is never removed (and a split
+  // leaves the base in its group), so g->prev exists.
+  g->prev->next = g->next;
   if (g->next) g->next->prev = g->prev;
   --groups_;
   delete g;
