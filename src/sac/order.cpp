@@ -136,7 +136,7 @@ void OrderList::insert_after_slow(Stamp* x, Stamp* y) {
       return;
     }
     split(x->group);
-    at_group_end = !nx || nx->group != x->group;
+    at_group_end = nx->group != x->group;  // nx exists: x was not at its group's end before the split
   }
   OmGroup* g = x->group;
   std::uint32_t hi = at_group_end ? kLabelEnd : nx->label;
