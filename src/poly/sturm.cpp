@@ -136,8 +136,8 @@ bool LatticeRootSolver::scan(const Integer& a, const Integer& b, int ca, int cb,
   const Polynomial& q = sturm().square_free();
   if (q.degree() == 1) {
     // One simple root r = −c0/c1, known to lie in [aδ, bδ): its interval is floor(r·2^b) in closed form.
+    // den > 0: the square-free part has a positive leading coefficient (the constructor makes it so).
     Integer num = -q[0] << static_cast<unsigned>(bits_), den = q[1];
-    if (den < 0) num = -num, den = -den;
     Integer k = num / den;
     if (k * den > num) k -= 1;  // floor for negative quotients
     KMR_CHECK(a <= k && k < b, "linear root outside the counted range");

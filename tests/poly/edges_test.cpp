@@ -57,5 +57,21 @@ TEST(PolyEdges, SquareFreePartOfPowersAndConstants) {
   EXPECT_EQ(s.distinct_real_roots(), 2);
 }
 
+// −6t + 15 (negative leading coefficient, content 3): one root 5/2, found in closed form from the
+// square-free part (whose leading coefficient the Sturm sequence makes positive): interval 2 at
+// bits 0 (mid-interval), 5 at bits 1 (on a lattice point), −3 for the mirrored root −5/2.
+TEST(PolyEdges, LinearRootWithNegativeLeadingCoefficient) {
+  for (auto [bits, k] : {std::pair{0, 2}, std::pair{1, 5}, std::pair{3, 20}}) {
+    LatticeRootSolver s(P({15, -6}), bits);
+    auto iv = s.isolate(Dyadic(-100), Dyadic(100));
+    ASSERT_EQ(iv.size(), 1u) << bits;
+    EXPECT_EQ(iv[0].k, Integer(k)) << bits;
+    EXPECT_TRUE(iv[0].sign_change);
+    EXPECT_EQ(s.next_failure_after(Dyadic(0), Dyadic(100)), std::optional<Integer>(Integer(k))) << bits;
+  }
+  LatticeRootSolver m(P({15, 6}), 0);  // 6t + 15: root −5/2 in [−3, −2)
+  EXPECT_EQ(m.next_failure_after(Dyadic(-100), Dyadic(100)), std::optional<Integer>(Integer(-3)));
+}
+
 }  // namespace
 }  // namespace kmr::poly
