@@ -21,6 +21,7 @@ Updater::Updater(std::vector<InputPoint> points, const Dyadic& t) : now_(t) {
   std::vector<Point2> pts;
   for (int v = 0; v < n; ++v) {
     inputs_[v] = Input{m.input[v], v, v, n == 1 ? kNoRank : m.info[v].rank};
+    key_of_trajectory_[{m.input[v].x, m.input[v].y, m.input[v].vx, m.input[v].vy}] = v;
     sn_to_key_[v] = v;
     pts.push_back(m.spanner.position(v));
   }
@@ -130,7 +131,9 @@ void Updater::remove_steiner(const Key& k) {
   KMR_CHECK(st.converted, "Remove of a satellite that is not converted");
   mark(k);
   int x = st.vertex;
+  const std::uint64_t ops_before = S_.ops;
   S_.remove(x);
+  last_.ops_remove += S_.ops - ops_before;
   touch_delaunay(x);
   info_[x] = VertexInfo{};
   st.converted = false;
@@ -202,6 +205,17 @@ void Updater::decide(const Key& k) {
   ++last_.converted;
 }
 
+// UpdateStats::reach (Lemma 4.3.4): how far, in units of 2^ℓ, an affected ℓ-satellite is from the
+// focus. Counted apart from the operations of Fig. 4.5 (a measurement, not a step of it).
+void Updater::measure_reach(const Key& k) {
+  auto [l, v, ray] = k;
+  if (!inputs_.count(v) || focus_.empty()) return;
+  const Point2 s = sat_position(v, ray, l);
+  Rank r = std::numeric_limits<Rank>::max();
+  for (const Point2& f : focus_) r = std::min(r, f == s ? l : min_rank_within(s, f, 1));
+  last_.reach = std::max(last_.reach, r - l);
+}
+
 // Stage 2 of Fig. 4.5: ranks in increasing order; Remove, then Convert, then the activity changes
 // passed on to the next rank.
 void Updater::propagate() {
@@ -220,6 +234,8 @@ void Updater::propagate() {
     }
     F_.erase(l);
     last_.affected += Fl.size();
+    last_.affected_max_rank = std::max(last_.affected_max_rank, Fl.size());
+    for (const Key& k : Fl) measure_reach(k);
     for (const Key& k : Fl) decide(k);
     KMR_CHECK(!F_.count(l), "update: a satellite of the current rank affected after its Convert phase");
     for (auto it = before_.lower_bound({l, std::numeric_limits<int>::min()}); it != before_.end() && it->first.first == l;) {
@@ -287,14 +303,12 @@ void Updater::finish(std::uint64_t ops0) {
   SN_.touched.clear();
   last_.ops = S_.ops + SN_.ops - ops0;
   total_ops_ += last_.ops;
-  for (auto& [k, st] : sats_) lowest_ = std::min(lowest_, std::get<0>(k));
+  if (!sats_.empty()) lowest_ = std::min(lowest_, std::get<0>(sats_.begin()->first));  // keys are rank-major
 }
 
 std::map<int, Updater::Input>::iterator Updater::find_trajectory(const InputPoint& p) {
-  return std::find_if(inputs_.begin(), inputs_.end(), [&](auto& e) {
-    const InputPoint& q = e.second.p;
-    return q.x == p.x && q.y == p.y && q.vx == p.vx && q.vy == p.vy;
-  });
+  auto k = key_of_trajectory_.find({p.x, p.y, p.vx, p.vy});
+  return k == key_of_trajectory_.end() ? inputs_.end() : inputs_.find(k->second);
 }
 
 // Stage 1 of an insertion: S restricted to N, the activation ranks, and the balls the new vertex
@@ -314,6 +328,7 @@ void Updater::insert_stage1(const InputPoint& p) {
   if (static_cast<std::size_t>(sid) >= info_.size()) info_.resize(sid + 1);
   info_[sid] = VertexInfo{false, key, 0, -1};
   inputs_[key] = Input{p, sid, sn, kNoRank};
+  key_of_trajectory_[{p.x, p.y, p.vx, p.vy}] = key;
   std::vector<int> t = SN_.touched;
   t.push_back(sn);
   refresh_rhos(t);
@@ -322,6 +337,7 @@ void Updater::insert_stage1(const InputPoint& p) {
 
 void Updater::insert(const InputPoint& p) {
   last_ = UpdateStats{};
+  focus_ = {scaled_at(p, now_)};
   std::uint64_t ops0 = S_.ops + SN_.ops;
   insert_stage1(p);
   finish(ops0);
@@ -331,6 +347,7 @@ void Updater::insert(const InputPoint& p) {
 void Updater::erase_stage1(std::map<int, Input>::iterator it) {
   int key = it->first;
   Input in = it->second;
+  key_of_trajectory_.erase({in.p.x, in.p.y, in.p.vx, in.p.vy});
   if (by_nucleus_.count(key)) {
     std::vector<Key> mine(by_nucleus_[key].begin(), by_nucleus_[key].end());
     for (const Key& k : mine) {
@@ -340,7 +357,9 @@ void Updater::erase_stage1(std::map<int, Input>::iterator it) {
     }
   }
   inputs_.erase(it);
+  const std::uint64_t ops_before = S_.ops;
   S_.remove(in.s);
+  last_.ops_remove += S_.ops - ops_before;
   touch_delaunay(in.s);
   info_[in.s] = VertexInfo{};
   if (auto w = witness_of_.find(in.s); w != witness_of_.end()) {
@@ -362,6 +381,7 @@ void Updater::erase(const InputPoint& p) {
   if (it == inputs_.end()) throw InputError("delete of (" + p.x.str() + ", " + p.y.str() + "): not in the input");
   if (inputs_.size() == 1) throw InputError("delete of the last input point");
   last_ = UpdateStats{};
+  focus_ = {S_.position(it->second.s)};
   std::uint64_t ops0 = S_.ops + SN_.ops;
   erase_stage1(it);
   finish(ops0);
@@ -369,6 +389,7 @@ void Updater::erase(const InputPoint& p) {
 
 void Updater::relocate(const std::vector<InputPoint>& moved) {
   last_ = UpdateStats{};
+  focus_.clear();
   std::uint64_t ops0 = S_.ops + SN_.ops;
   std::vector<InputPoint> back;
   for (const InputPoint& p : moved) {
@@ -376,6 +397,7 @@ void Updater::relocate(const std::vector<InputPoint>& moved) {
     KMR_CHECK(it != inputs_.end(), "relocate: a trajectory that is not in the input");
     if (inputs_.size() == 1) break;  // the last point stays (a lone point has no certificate)
     back.push_back(it->second.p);
+    focus_.push_back(S_.position(it->second.s));
     erase_stage1(it);
   }
   propagate();
@@ -473,11 +495,16 @@ Mesh Updater::mesh() {
   s_id_of_mesh_.assign(m.size(), -1);
   for (int x = 0; x < static_cast<int>(S_.size()); ++x)
     if (new_id[x] >= 0) s_id_of_mesh_[new_id[x]] = x;
+  repair_delaunay();
+  if (n >= 2) m.triangles = triangles_from_stars(stars_, new_id);
+  return m;
+}
+
+void Updater::repair_delaunay() {
+  if (delaunay_touched_.empty()) return;  // nothing changed since: last() keeps the counts of the repair
   std::uint64_t before = S_.ops;
   voronoi_repair();
-  if (n >= 2) m.triangles = triangles_from_stars(stars_, new_id);
   last_.ops_delaunay = S_.ops - before;
-  return m;
 }
 
 void Updater::voronoi_certificates_failed(const std::vector<int>& mesh_ids) {

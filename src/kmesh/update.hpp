@@ -38,8 +38,10 @@
 // triangles equal those of a from-scratch construction (tested in tests/kmesh/kds_test.cpp). The
 // renumbering and the listing of the output stay global (O(|M|) integer work).
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <set>
+#include <tuple>
 #include <vector>
 
 #include "kmesh/construction.hpp"
@@ -52,6 +54,15 @@ struct UpdateStats {
   std::uint64_t ops = 0;          // spanner and propagation operations of stages 1–2 (local)
   std::uint64_t ops_delaunay = 0; // stage 3 of the last mesh() (local: voronoi_repair)
   std::size_t stars = 0;          // stars recomputed by that voronoi_repair
+  // Locality of the update (§4.3.1), counted for tests/kmesh/locality_test.cpp. The focus: the
+  // inserted, deleted or relocated input points.
+  std::size_t affected_max_rank = 0;  // L4.3.5: the largest |F_ℓ| over the ranks processed
+  // L4.3.4: the largest r − ℓ over the satellites s taken from F_ℓ, r the least rank with
+  // |s f| ≤ 2^r for a focus f (satellites of a deleted nucleus are skipped: it is the focus);
+  // kNoReach if none was measured.
+  static constexpr Rank kNoReach = std::numeric_limits<Rank>::min();
+  Rank reach = kNoReach;
+  std::uint64_t ops_remove = 0;  // L4.3.6: spanner operations of the Remove calls (S.remove)
 };
 
 class Updater {
@@ -82,8 +93,13 @@ class Updater {
   // The current mesh, renumbered canonically (inputs sorted, then Steiner vertices by rank, nucleus,
   // ray), with its Delaunay triangulation (stage 3) and `considered` rebuilt from the records
   // (`existing` = the vertices of lower rank, so L4.2.5 reads as U2). Stage 3 runs here
-  // (voronoi_repair), so the stars are repaired once for all the changes since the last call.
+  // (repair_delaunay), so the stars are repaired once for all the changes since the last call; the
+  // listing itself is Θ(|M|) (the output), the rest of an update is local.
   Mesh mesh();
+  // Stage 3 of Fig. 4.5 alone (local: the stars of the vertices touched since the last repair and
+  // their neighbours'), without listing the mesh; mesh() calls it first. last().ops_delaunay and
+  // last().stars count it.
+  void repair_delaunay();
   const UpdateStats& last() const { return last_; }
   std::size_t input_size() const { return inputs_.size(); }
   std::uint64_t total_ops() const { return total_ops_; }
@@ -112,6 +128,7 @@ class Updater {
   Rank recompute_highest();
   void refresh_rhos(const std::vector<int>& sn_touched);
   void propagate();
+  void measure_reach(const Key& k);
   void mark(const Key& k);
   void remove_steiner(const Key& k);
   void remove_balls_containing(const Point2& p, Rank above);
@@ -130,6 +147,8 @@ class Updater {
 
   std::vector<InputPoint> sorted_;  // the live input (for messages and rebuilds)
   std::map<int, Input> inputs_;     // by input key (stable: the first ids are the sorted input)
+  // trajectory (x, y, vx, vy) → input key: find_trajectory in O(log n)
+  std::map<std::tuple<exact::Integer, exact::Integer, exact::Integer, exact::Integer>, int> key_of_trajectory_;
   std::map<int, int> sn_to_key_;    // S_N id → input key
   int next_key_ = 0;
   Spanner S_, SN_;
@@ -142,6 +161,7 @@ class Updater {
   VoronoiStars stars_;             // per id of S: its Delaunay star (empty when dead)
   std::set<int> delaunay_touched_;  // ids of S touched since the last voronoi_repair
   std::vector<int> s_id_of_mesh_;   // the last mesh()'s ids → ids of S
+  std::vector<Point2> focus_;       // the focus of the update in progress (UpdateStats::reach)
   Rank lowest_ = 0, highest_ = 0;
   Dyadic now_{0};
   UpdateStats last_;
