@@ -5,6 +5,7 @@
 // Guarantees (tests/hull/key_table_test.cpp, against std::map under random operations):
 //  * find / insert / erase / size behave as a map's: find(k) is the value stored under k, or null;
 //    insert(k, v) stores v under an absent k (refused with a ContractError if k is present);
+//    find(k, probe) then insert(k, v, probe) is find(k) then insert(k, v), hashing and probing once;
 //    erase(k) removes k and says whether it was there; clear() empties the table.
 //  * Open addressing with linear probing in a power-of-two array, at most half full (grown by
 //    doubling; each slot keeps its key's hash, so growth and deletion never rehash a key, and a
@@ -41,6 +42,31 @@ class KeyTable {
     }
   }
   const V* find(const K& k) const { return const_cast<KeyTable*>(this)->find(k); }
+  // find(k, probe) is find(k), and on a miss remembers where k would go: insert(k, v, probe) right
+  // after it (no insert, erase or clear between) stores k there without hashing or probing again.
+  struct Probe {
+    std::uint32_t hash = 0;
+    std::size_t slot = kNoSlot;
+  };
+  V* find(const K& k, Probe& probe) {
+    probe = Probe{hash(k), kNoSlot};
+    if (slots_.empty()) return nullptr;
+    for (std::size_t i = probe.hash & mask();; i = next(i)) {
+      Slot& s = slots_[i];
+      if (!s.full) {
+        probe.slot = i;
+        return nullptr;
+      }
+      if (s.hash == probe.hash && s.key == k) return &s.value;
+    }
+  }
+  V& insert(const K& k, V v, const Probe& probe) {
+    if (probe.slot == kNoSlot || 2 * (size_ + 1) > slots_.size()) return insert(k, std::move(v));  // grows: probe anew
+    KMR_CHECK(!slots_[probe.slot].full, "KeyTable::insert: a stale probe");
+    slots_[probe.slot] = Slot{k, probe.hash, true, std::move(v)};
+    ++size_;
+    return slots_[probe.slot].value;
+  }
   bool contains(const K& k) const { return find(k) != nullptr; }
 
   V& insert(const K& k, V v) {
@@ -55,8 +81,9 @@ class KeyTable {
   }
   // Stores v under k, replacing a present value.
   V& assign(const K& k, V v) {
-    if (V* p = find(k)) return *p = std::move(v);
-    return insert(k, std::move(v));
+    Probe probe;
+    if (V* p = find(k, probe)) return *p = std::move(v);
+    return insert(k, std::move(v), probe);
   }
 
   bool erase(const K& k) {
@@ -101,6 +128,7 @@ class KeyTable {
     bool full = false;
     V value{};
   };
+  static constexpr std::size_t kNoSlot = ~std::size_t{0};
   static std::uint32_t hash(const K& k) { return static_cast<std::uint32_t>(Hash{}(k)); }
   std::size_t mask() const { return slots_.size() - 1; }
   std::size_t next(std::size_t i) const { return (i + 1) & mask(); }

@@ -552,7 +552,8 @@ sac::Mod<int>* KineticHull::certificate(Test test, int a, int b, int c, int d) {
 
 void KineticHull::init_certificate(CertificateMod& m, Test test, int a, int b, int c, int d) {
   const CertificateKey key{static_cast<int>(test), a, b, c, d};
-  if (Registration* it = certs_.find(key)) {  // re-created under its key before its predecessor's
+  decltype(certs_)::Probe probe;  // one hash and one probe for the lookup and the insert
+  if (Registration* it = certs_.find(key, probe)) {  // re-created under its key before its predecessor's
     m.value = it->cert->value;  // release: the simulator keeps its certificate (the same outcome)
     it->cert->payload.current = false;
     it->cert = &m;
@@ -568,7 +569,7 @@ void KineticHull::init_certificate(CertificateMod& m, Test test, int a, int b, i
     } else {
       m.value = sign_before_t(P);
     }
-    certs_.insert(key, Registration{&m, sid});
+    certs_.insert(key, Registration{&m, sid}, probe);  // (nothing inserted or erased since the probe)
     index_certificate(key, true);
     if (sim_) register_sim(sid, &m);
   }

@@ -49,19 +49,26 @@ const MotionSimulator::Record& MotionSimulator::record(CertificateId id) const {
   return records_[slot_of_id_[id]];
 }
 
-CertificateId MotionSimulator::add_record(Record r) {
-  CertificateId id = next_id_++;
+MotionSimulator::Record& MotionSimulator::fresh_record(CertificateId& id) {
+  id = next_id_++;
   std::uint32_t slot;
   if (!free_slots_.empty()) {
     slot = free_slots_.back();
     free_slots_.pop_back();
-    records_[slot] = std::move(r);
+    records_[slot] = Record{};
   } else {
     slot = static_cast<std::uint32_t>(records_.size());
-    records_.push_back(std::move(r));
+    records_.emplace_back();
   }
   slot_of_id_.push_back(slot);  // ids are sequential: slot_of_id_[id]
-  schedule(records_[slot], id);
+  return records_[slot];
+}
+
+CertificateId MotionSimulator::add_record(Record r) {
+  CertificateId id;
+  Record& slot = fresh_record(id);
+  slot = std::move(r);
+  schedule(slot, id);
   ++counters_.created;
   return id;
 }
@@ -86,12 +93,17 @@ CertificateId MotionSimulator::add(const poly::MachinePolynomial& p) {
   // the filter the exact path decides everything anyway.
   if (!(options_.machine_fast_path && options_.failure_filter && small_lattice_) || p.degree() <= 1)
     return add(p.to_polynomial());
-  Record r;
+  const int outcome = poly::sign_before_lattice(p, now_k_, bits_);
+  ++counters_.machine_polynomials;
+  // Built in its slot (as add_record, without a Record moved twice: one per certificate).
+  CertificateId id;
+  Record& r = fresh_record(id);
   r.cubic = true;
   r.mp = p;
-  r.outcome = poly::sign_before_lattice(p, now_k_, bits_);
-  ++counters_.machine_polynomials;
-  return add_record(std::move(r));
+  r.outcome = outcome;
+  schedule(r, id);
+  ++counters_.created;
+  return id;
 }
 
 Certificate& MotionSimulator::exact_of(Record& r) {

@@ -145,6 +145,7 @@ class MotionSimulator {
   static constexpr std::uint32_t kNoRecord = 0xffffffffu;
 
   CertificateId add_record(Record r);
+  Record& fresh_record(CertificateId& id);  // a default record under the next id (its slot reused or new)
   Record& record(CertificateId id);
   const Record& record(CertificateId id) const;
   void schedule(Record& r, CertificateId id);

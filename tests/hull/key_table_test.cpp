@@ -1,5 +1,5 @@
 // KeyTable (hull/key_table.hpp) against std::map under random insert / erase / find / assign
-// sequences: after every operation the answers agree, and periodically the whole contents (listed
+// (and find-with-probe then insert-through-the-probe) sequences: after every operation the answers agree, and periodically the whole contents (listed
 // by for_each, then sorted) equal the map's. A weak hash forces long probe runs and wrap-around,
 // where backward-shift deletion is exercised; the seed is printed.
 #include <gtest/gtest.h>
@@ -43,7 +43,19 @@ void random_against_map(std::uint64_t seed, int ops, int key_range) {
     SCOPED_TRACE("seed " + std::to_string(seed) + ", operation " + std::to_string(i));
     const Key k = key();
     const int o = op(rng);
-    if (o < 4) {  // insert when absent, else assign
+    if (o < 2) {  // find with a probe, then insert through the probe when absent (else overwrite)
+      typename KeyTable<Key, long long, Hash>::Probe probe;
+      long long* v = t.find(k, probe);
+      auto it = m.find(k);
+      ASSERT_EQ(v != nullptr, it != m.end());
+      if (v) {
+        ASSERT_EQ(*v, it->second);
+        *v = i;
+      } else {
+        EXPECT_EQ(t.insert(k, i, probe), i);
+      }
+      m[k] = i;
+    } else if (o < 4) {  // insert when absent, else assign
       if (m.count(k)) {
         t.assign(k, i);
       } else {
