@@ -128,7 +128,7 @@ TEST(WsJudge, T3_3_4_StableWS4DJudgedWithCgalEpeckD) {
 // Issue 11 §5: the 4D clustered family (spread ≈ 2^12), skipped before its construction took
 // minutes at n = 4 (half of the interval tier's calls fell back to exact arithmetic: the vertices of
 // the clipped cells were chained through the edge's ends; now solved from their tight
-// constraints). ρ = 4, β = 8 keeps the output small (|M| ≈ 170) and the run short.
+// constraints). ρ = 4, β = 8 keeps the output small (|M| = 150) and the run short.
 TEST(WsJudge, T3_3_4_StableWS4DClusteredJudgedWithCgalEpeckD) {
   RecordProperty("claim", "T3.3.4");
   for (std::uint64_t seed : {1u}) {

@@ -120,6 +120,10 @@ TEST(KmeshLocality, L4_3_3_to_L4_3_6_AnUpdateTouchesABoundedNeighbourhoodPerRank
       U.relocate({q});
       check("relocation", U, pts, {at_rest(q)}, m);
     }
+    // Non-vacuity: the bounds above were measured on updates that really affected satellites.
+    EXPECT_GT(m.reach, UpdateStats::kNoReach) << "no update affected a satellite: L4.3.4 unmeasured";
+    EXPECT_GT(m.per_rank, 0u);
+    EXPECT_GT(m.stars, 0u);
     std::printf("lg Δ ≈ %d: %zu updates; L4.3.3 active within 2^(ℓ+1) of the focus per rank %zu (not asserted), reach %lld (≤ %lld), "
                 "|F_ℓ| %zu (≤ %zu), affected ÷ lg Δ %.1f (≤ %.0f), Remove ops ÷ lg Δ %.1f (≤ %.0f), stars %zu (≤ %zu)\n",
                 lg, m.updates, m.active, (long long)m.reach, (long long)kReach, m.per_rank, kPerRank,
