@@ -187,7 +187,7 @@ Verdict l442(const Options& o) {
   v.figure("changes per unit time ≥ 2(|M_int| − |M_half|), ÷ (n log2(1/ε)) at the smallest ε (L4.4.4)",
            fmt(2 * (at_int.back() - at_half.back()) / js.back()));
   v.pass = grows && hmax / hmin < 1.15;
-  if (!grows) v.summary = "integer-time Steiner/n does not grow by more than 1 per step of log2(1/ε) (L4.4.2); ";
+  if (!grows) v.summary = "integer-time Steiner/n does not grow by more than 1 between consecutive ε (L4.4.2); ";
   if (!(hmax / hmin < 1.15)) v.summary += "half-integer Steiner/n varies by a factor " + fmt(hmax / hmin) + " ≥ 1.15 (L4.4.3); ";
   v.summary += "Fig. 4.6 snapshots (n = 8, ε = 2^-j), from scratch: Steiner/n grows with log(1/ε) at integer times and stays "
               "flat at half-integer times (L4.4.2, L4.4.3; L4.4.4's lower bound per unit time follows)";
