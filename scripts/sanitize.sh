@@ -6,6 +6,10 @@
 # them and they would only repeat it: the benchmarks (not tests), `audit.full` (the same checks as
 # `audit.quick` on larger inputs, ~4 min plain, several times that under ASan), and the clang libFuzzer
 # build with its seeded runs (KMR_FUZZ_SEEDED=OFF; those binaries are ASan+UBSan-instrumented already).
+# Also trimmed as pure repeats of what `audit.quick` executes here under the sanitizers (same
+# checks, same quick inputs, same seed): `WellspacedAudit.Chapter3ChecksPassQuick` (Chapter 3's
+# quick checks again) and `AuditThresholds.*` (the quick checks again, with a judged figure moved
+# across its bound: only the judges' comparisons differ; tests/audit/threshold_test.cpp).
 # The corpus replays of every harness do run here, sanitized. Per-test timeouts are 4x the plain
 # run's (KMR_TEST_TIMEOUT_SCALE): ASan slows the exact-arithmetic-heavy property tests several-fold.
 # The test-side files (tests, property tests, replays, oracles; not src/) compile at -O1
@@ -32,4 +36,4 @@ cmake --build "$dir" -j 2
 # and the 4D degenerate families 524 -> 308 s, interleaved on a loaded machine).
 export ASAN_OPTIONS=${ASAN_OPTIONS:-halt_on_error=1:abort_on_error=1:detect_leaks=1:malloc_context_size=2}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
-ctest --test-dir "$dir" --output-on-failure -j 2 --timeout 1800 -E '^audit\.full$' "$@"
+ctest --test-dir "$dir" --output-on-failure -j 2 --timeout 1800 -E '^audit\.full$|^WellspacedAudit\.Chapter3ChecksPassQuick$|^AuditThresholds\.' "$@"

@@ -23,7 +23,8 @@ struct Options {
   // Called before each check (index from 0, count, claim ID) and once more with index == count at
   // the end; the CLI shows it on stderr when stderr is a terminal. Never writes to `out`.
   std::function<void(std::size_t, std::size_t, const std::string&)> progress;
-  // A seam for tests of the judges (tests/audit/fail_verdict_test.cpp), never set by `kmr audit`:
+  // A seam for tests of the judges (tests/audit/fail_verdict_test.cpp, threshold_test.cpp), never
+  // set by `kmr audit`:
   // a check passes the measured result it is about to judge through measured(options, name, value),
   // and tamper may replace that value (held in the std::any) with a wrong one, so that a test sees
   // the check's FAIL path. Unset, measured() returns the value untouched: the audit measures and

@@ -48,12 +48,15 @@ Verdict kinetic_sorting(const Options& options) {
   }
   kinetic::MotionSimulator sim(bits, until);
   kinetic::KineticSort sort(x, sim);
+  // The exact positions at t, each computed once (n products, not two per comparison), then sorted.
   auto expected = [&](const Dyadic& t) {
+    std::vector<Dyadic> at;
+    at.reserve(m.size());
+    for (const auto& [x0, v] : m) at.push_back(Dyadic(x0) + Dyadic(v) * t);
     std::vector<std::size_t> idx(m.size());
     std::iota(idx.begin(), idx.end(), std::size_t{0});
     std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
-      Dyadic pa = Dyadic(m[a].first) + Dyadic(m[a].second) * t, pb = Dyadic(m[b].first) + Dyadic(m[b].second) * t;
-      return pa != pb ? pa < pb : m[a].second > m[b].second;
+      return at[a] != at[b] ? at[a] < at[b] : m[a].second > m[b].second;
     });
     return idx;
   };
