@@ -43,7 +43,7 @@ struct Stamp {
   double faults = thread_faults();
   static double thread_faults() {
     rusage u{};
-    getrusage(RUSAGE_SELF, &u);  // the process: with_stack runs the kinetic code on its own thread
+    getrusage(RUSAGE_SELF, &u);  // the whole process
     return double(u.ru_minflt);
   }
 };

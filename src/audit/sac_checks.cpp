@@ -9,6 +9,7 @@
 
 #include "audit/audit.hpp"
 #include "sacprograms/bench.hpp"
+#include "sac/big_stack.hpp"
 #include "sac/runtime.hpp"
 #include "sacprograms/exptree.hpp"
 #include "sacprograms/generality.hpp"
@@ -242,7 +243,7 @@ Verdict overhead_and_speedup(const Options& o) {
 }
 }  // namespace
 
-// The list programs recurse once per element: run every check on a thread with a large stack
+// The list programs recurse once per element: run every check on a large stack
 // (reserved, not committed: only the pages touched cost memory).
 std::function<Verdict(const Options&)> on_large_stack(Verdict (*check)(const Options&)) {
   return [check](const Options& o) {

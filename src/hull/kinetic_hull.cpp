@@ -58,8 +58,6 @@ constexpr Label kFace{"hull.face"}, kNbr{"hull.face.nbr"}, kKiller{"hull.face.ki
     kTent{"hull.tent"}, kRoots{"hull.roots"}, kCertInitial{"hull.cert.initial"}, kCertVisible{"hull.cert.visible"},
     kCertSide{"hull.cert.side"}, kFindFace{"hull.find_face"};
 
-constexpr std::size_t kStack = std::size_t{1} << 30;  // virtual; continuations nest per insertion
-
 struct Border {  // a horizon entry: the invisible neighbour and the ripped face's edge
   FaceH nbr;
   int u, v;
@@ -332,7 +330,7 @@ KineticHull::~KineticHull() {
 // run / incrementalHull / app insertVertex: the initial tetrahedron (its orientation a
 // certificate), then every other point in priority order.
 void KineticHull::run() {
-  sac::with_stack(kStack, [this] {
+  stack_.run([this] {
     rt_.run([this] {
       const int a = simplex_[0], b = simplex_[1], c = simplex_[2], d = simplex_[3];  // (no captured bindings: clang 14)
       Mod<Roots>* roots = rt_.alloc<Roots>(kRoots);
@@ -360,7 +358,7 @@ void KineticHull::update(const std::vector<kinetic::CertificateId>& batch) {
 
 void KineticHull::propagate() {
   if (sim_) t_ = sim_->now();
-  sac::with_stack(kStack, [this] { rt_.propagate(); });
+  stack_.run([this] { rt_.propagate(); });
   ++counters_.propagations;
 }
 

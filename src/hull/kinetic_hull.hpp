@@ -37,6 +37,7 @@
 #include "hull/key_table.hpp"
 #include "hull/moving_points.hpp"
 #include "kinetic/motion_simulator.hpp"
+#include "sac/big_stack.hpp"
 #include "sac/runtime.hpp"
 
 namespace kmr::hull {
@@ -178,6 +179,9 @@ class KineticHull {
   std::optional<MachinePoint> machine_centre_;        // of centre_sum_, when all four have one
   std::optional<std::pair<std::int64_t, int>> t_lattice_;  // t_ = k·2^-b with |k| < 2^53, 0 ≤ b ≤ 62
   sac::Runtime rt_;
+  // Runs and propagations nest a continuation per insertion: they run on one kept 1 GiB (virtual)
+  // stack, mapped once and warm after the initial run (issue 9; spec/hull.md "Kinetic performance").
+  sac::BigStack stack_{std::size_t{1} << 30};
   // Lookup-only flat tables (key_table.hpp; iteration order never reaches a result: what is
   // listed is sorted first).
   struct KeyHash {  // two ints per 64-bit word, a multiply per word, one finalizer (sac::mix)

@@ -1,7 +1,5 @@
 #include "sac/runtime.hpp"
 
-#include <pthread.h>
-
 #include <atomic>
 #include <cstdlib>
 #include <mutex>
@@ -584,36 +582,6 @@ Stats Runtime::stats() const {
   s.bytes = bytes_ + om_.bytes() + buckets_.capacity() * sizeof(void*) + heap_.capacity() * sizeof(void*);
   s.om_relabels = om_.relabels();
   return s;
-}
-
-// ---- big stacks -------------------------------------------------------------------------------
-namespace {
-struct StackJob {
-  const std::function<void()>* f;
-  std::exception_ptr error;
-};
-void* stack_trampoline(void* p) {
-  auto* job = static_cast<StackJob*>(p);
-  try {
-    (*job->f)();
-  } catch (...) {
-    job->error = std::current_exception();
-  }
-  return nullptr;
-}
-}  // namespace
-
-void with_stack(std::size_t bytes, const std::function<void()>& f) {
-  pthread_attr_t attr;
-  pthread_attr_init(&attr);
-  KMR_CHECK(pthread_attr_setstacksize(&attr, bytes) == 0, "sac::with_stack: bad stack size");
-  StackJob job{&f, nullptr};
-  pthread_t t;
-  int rc = pthread_create(&t, &attr, stack_trampoline, &job);
-  pthread_attr_destroy(&attr);
-  KMR_CHECK(rc == 0, "sac::with_stack: cannot create a thread with a stack of " + std::to_string(bytes) + " bytes");
-  pthread_join(t, nullptr);
-  if (job.error) std::rethrow_exception(job.error);
 }
 
 }  // namespace kmr::sac

@@ -1105,8 +1105,4 @@ class Traceable {
   Mod<T>* mod_;
 };
 
-// Runs f on a thread with a stack of `bytes` (deeply recursive programs such as list recursion
-// over 10^6 cells need more than the default stack). Exceptions propagate to the caller.
-void with_stack(std::size_t bytes, const std::function<void()>& f);
-
 }  // namespace kmr::sac

@@ -9,6 +9,7 @@
 
 #include <sys/resource.h>
 
+#include "sac/big_stack.hpp"
 #include "sacprograms/exptree.hpp"
 #include "sacprograms/session.hpp"
 
@@ -161,8 +162,8 @@ double probe_bytes_here(const std::string& program, std::size_t n, std::uint64_t
   auto reader = p.build(rt, input.root());
   return static_cast<double>(rt.stats().bytes);
 }
-// On its own thread with a large stack (list recursion nests per element; sanitizer builds use
-// several times the frame size, hence 8× bench_all's 2 KiB per element), whatever thread calls it.
+// On a large stack (list recursion nests per element; sanitizer builds use
+// several times the frame size, hence 8× bench_all's 2 KiB per element).
 double probe_bytes(const std::string& program, std::size_t n, std::uint64_t seed) {
   double bytes = 0;
   sac::with_stack(std::max<std::size_t>(std::size_t{64} << 20, n * 16384),

@@ -1,17 +1,10 @@
-// Two refusals of sac/runtime.hpp that the other misuse tests leave out (issue 13 §2), each judged
-// by an independent fact: a program whose change propagation would write a modifiable after a read
+// A refusal of sac/runtime.hpp that the other misuse tests leave out (issue 13 §2), judged by an
+// independent fact: a program whose change propagation would write a modifiable after a read
 // of it (inconsistent: run from scratch on the changed input, the same program reads the modifiable
-// before writing it, which the runtime refuses too); and with_stack on a stack size the system
-// refuses (below PTHREAD_STACK_MIN, POSIX's EINVAL) or cannot map, while a valid size runs f on a
-// thread whose stack (pthread_getattr_np) is at least that size and passes f's exception back.
+// before writing it, which the runtime refuses too). (with_stack's refusals: big_stack_test.cpp.)
 #include <gtest/gtest.h>
 
-#include <pthread.h>
-
-#include <climits>
-#include <stdexcept>
 #include <string>
-#include <thread>
 
 #include "error_of.hpp"
 #include "sac/runtime.hpp"
@@ -83,30 +76,6 @@ TEST(SacConsistency, TheSameShapeWritingAnotherCellPropagates) {
   Mod<int>* late0 = nullptr;
   fresh.run([&] { body(fresh, in0, &seen0, &late0); });
   EXPECT_EQ(rt.signature(), fresh.signature());
-}
-
-TEST(SacWithStack, RefusedSizesAndTheStackFRunsOn) {
-  bool ran = false;
-  std::string small = error_of([&] { with_stack(PTHREAD_STACK_MIN - 1, [&] { ran = true; }); });
-  EXPECT_TRUE(has(small, "sac::with_stack: bad stack size")) << small;
-  // 2^62 bytes: accepted by pthread_attr_setstacksize (above the minimum) but never mappable.
-  std::string huge = error_of([&] { with_stack(std::size_t{1} << 62, [&] { ran = true; }); });
-  EXPECT_TRUE(has(huge, "cannot create a thread with a stack of 4611686018427387904 bytes")) << huge;
-  EXPECT_FALSE(ran);
-  // A valid size: f runs on another thread whose stack holds at least that many bytes.
-  const std::size_t want = std::size_t{8} << 20;
-  std::size_t got = 0;
-  std::thread::id where;
-  with_stack(want, [&] {
-    pthread_attr_t attr;
-    ASSERT_EQ(pthread_getattr_np(pthread_self(), &attr), 0);
-    ASSERT_EQ(pthread_attr_getstacksize(&attr, &got), 0);
-    pthread_attr_destroy(&attr);
-    where = std::this_thread::get_id();
-  });
-  EXPECT_GE(got, want);
-  EXPECT_NE(where, std::this_thread::get_id());
-  EXPECT_THROW(with_stack(want, [] { throw std::out_of_range("from the big stack"); }), std::out_of_range);
 }
 
 }  // namespace

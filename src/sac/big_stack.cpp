@@ -1,0 +1,124 @@
+#include "sac/big_stack.hpp"
+
+#include <pthread.h>
+#include <sys/mman.h>
+#include <ucontext.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <string>
+
+#include "exact/error.hpp"
+
+#if defined(__SANITIZE_ADDRESS__)
+#define KMR_ASAN_FIBERS 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define KMR_ASAN_FIBERS 1
+#endif
+#endif
+#ifdef KMR_ASAN_FIBERS
+#include <sanitizer/common_interface_defs.h>
+#endif
+
+namespace kmr::sac {
+
+namespace {
+struct Contexts {
+  ucontext_t caller, stack;
+  const void* caller_bottom = nullptr;  // the caller's stack, for AddressSanitizer's switch back
+  std::size_t caller_size = 0;
+  void* fake_stack = nullptr;  // the caller's fake stack (AddressSanitizer's use-after-return)
+};
+std::size_t page_size() { return static_cast<std::size_t>(sysconf(_SC_PAGESIZE)); }
+}  // namespace
+
+BigStack::BigStack(std::size_t bytes) {
+  KMR_CHECK(bytes >= static_cast<std::size_t>(PTHREAD_STACK_MIN), "sac::BigStack: bad stack size " + std::to_string(bytes));
+  const std::size_t page = page_size();
+  const std::size_t usable = (bytes + page - 1) / page * page;
+  void* p = usable < bytes || usable + page < usable
+                ? MAP_FAILED
+                : mmap(nullptr, usable + page, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE | MAP_STACK, -1, 0);
+  KMR_CHECK(p != MAP_FAILED, "sac::BigStack: cannot map a stack of " + std::to_string(bytes) + " bytes");
+  base_ = static_cast<char*>(p);
+  mapped_ = usable + page;
+  usable_ = usable;
+  mprotect(base_, page, PROT_NONE);  // guard page: an overflow faults instead of writing below
+  contexts_ = new Contexts;
+}
+
+BigStack::~BigStack() {
+  delete static_cast<Contexts*>(contexts_);
+  munmap(base_, mapped_);
+}
+
+bool BigStack::contains(const void* p) const {
+  auto a = reinterpret_cast<std::uintptr_t>(p), lo = reinterpret_cast<std::uintptr_t>(base_ + (mapped_ - usable_));
+  return a >= lo && a < lo + usable_;
+}
+
+// makecontext passes int arguments only: `this` travels as two 32-bit halves.
+void BigStack::enter(unsigned hi, unsigned lo) {
+  reinterpret_cast<BigStack*>((static_cast<std::uintptr_t>(hi) << 32) | lo)->body();
+}  // returning resumes uc_link, the caller's context
+
+void BigStack::body() {
+  auto& c = *static_cast<Contexts*>(contexts_);
+#ifdef KMR_ASAN_FIBERS
+  __sanitizer_finish_switch_fiber(nullptr, &c.caller_bottom, &c.caller_size);
+#endif
+  try {
+    (*job_)();
+  } catch (...) {
+    error_ = std::current_exception();
+  }
+#ifdef KMR_ASAN_FIBERS
+  __sanitizer_start_switch_fiber(nullptr, c.caller_bottom, c.caller_size);  // this run's frames end here
+#endif
+  (void)c;
+}
+
+void BigStack::run(const std::function<void()>& f) {
+  if (running_) {  // nested: already on this stack
+    f();
+    return;
+  }
+  auto& c = *static_cast<Contexts*>(contexts_);
+  KMR_CHECK(getcontext(&c.stack) == 0, "sac::BigStack: getcontext failed");
+  c.stack.uc_stack.ss_sp = base_ + (mapped_ - usable_);
+  c.stack.uc_stack.ss_size = usable_;
+  c.stack.uc_link = &c.caller;
+  const auto self = reinterpret_cast<std::uintptr_t>(this);
+  makecontext(&c.stack, reinterpret_cast<void (*)()>(&BigStack::enter), 2, static_cast<unsigned>(self >> 32),
+              static_cast<unsigned>(self & 0xffffffffu));
+  job_ = &f;
+  error_ = nullptr;
+  running_ = true;
+  // getcontext + setcontext rather than swapcontext, whose AddressSanitizer interceptor prints a
+  // warning on stderr; f's return resumes here through uc_link, with `entered` set.
+  volatile bool entered = false;
+  getcontext(&c.caller);
+  if (!entered) {
+    entered = true;
+#ifdef KMR_ASAN_FIBERS
+    __sanitizer_start_switch_fiber(&c.fake_stack, base_ + (mapped_ - usable_), usable_);
+#endif
+    setcontext(&c.stack);
+    KMR_CHECK(false, "sac::BigStack: setcontext failed");
+  }
+#ifdef KMR_ASAN_FIBERS
+  __sanitizer_finish_switch_fiber(c.fake_stack, nullptr, nullptr);
+#endif
+  running_ = false;
+  job_ = nullptr;
+  if (error_) {
+    std::exception_ptr e = std::move(error_);
+    error_ = nullptr;
+    std::rethrow_exception(e);
+  }
+}
+
+void with_stack(std::size_t bytes, const std::function<void()>& f) { BigStack(bytes).run(f); }
+
+}  // namespace kmr::sac
