@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <cstdlib>
 #include <random>
 #include <sstream>
 #include <tuple>
@@ -145,12 +146,13 @@ TEST(WsJudge, T3_3_4_StableWS4DClusteredJudgedWithCgalEpeckD) {
   }
 }
 
-// Issue 11 §5: the 4D pair 2^-30 apart (the library's close_pair generator at n = 2: spread 2^30),
-// skipped before (13.7 s at ρ = 4 on main: the certificate-region test and the clip of the scan
-// dominated); judged once both were made faster (spec/wellspaced.md, "Speed of the degenerate
-// families").
+// Issue 11 §5: the 4D pair 2^-30 apart (the library's close_pair generator at n = 2: spread 2^30).
+// Opt-in (KMR_WS_SLOW=1): 17 s CPU (9 s construction, |M| = 484; 8 s judge) after the speed-up of
+// the certificate-region test and the clip (main: 11 s construction) — not the few seconds the
+// default run (and its ASan run) can afford; spec/wellspaced.md, "Speed of the degenerate families".
 TEST(WsJudge, T3_3_4_StableWS4DClosePairJudgedWithCgalEpeckD) {
   RecordProperty("claim", "T3.3.4");
+  if (!std::getenv("KMR_WS_SLOW")) GTEST_SKIP() << "opt-in: KMR_WS_SLOW=1 (17 s CPU)";
   const auto in = kmr::wellspaced::gen::points<4>(kmr::wellspaced::gen::Kind::close_pair, 2, 1);
   ASSERT_EQ(in.size(), 2u);
   lib::Params p;
