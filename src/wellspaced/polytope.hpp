@@ -14,9 +14,11 @@
 //    squared distance r2 of point c", by the active-set enumeration of the KKT points.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <boost/multiprecision/gmp.hpp>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <type_traits>
@@ -587,6 +589,9 @@ struct Polytope {
   std::vector<int> ring_;             // 2D: the vertex cycle while the polygon is full-dimensional
   std::vector<int> scratch_index_;    // clip_polygon's new index of each kept vertex, reused
   std::vector<int> scratch_ring_;     // clip_polygon's new cycle, swapped with ring_
+  std::vector<std::uint64_t> scratch_bits_;  // clip_combinatorial's tight bit rows, reused
+  std::vector<std::uint64_t> scratch_outside_;  // clip_combinatorial's outside vertices (bits), reused
+  std::vector<std::uint64_t> scratch_cand_;     // clip_combinatorial's candidate partners (bits), reused
 
   // The signs of constraint j at the vertices (into scratch_sign_). When no vertex is strictly
   // outside, records j as tight where it is and returns false (the vertex set is unchanged).
@@ -668,29 +673,71 @@ struct Polytope {
   }
   // Any dimension: an edge pq is a pair of vertices tight on ≥ D − 1 common constraints with no
   // third vertex tight on all of them. Output: the new vertices by (inside p, outside q) in index
-  // order, then the kept vertices in order.
+  // order, then the kept vertices in order. The "no third vertex" test is the AND of one bit row
+  // per common constraint (bit r of row k: vertex r is tight on k), which must hold only p and q:
+  // the same test as scanning every r for tight(r) ⊇ common (issue 11 §5: the scan was O(V) per
+  // pair, 24 % of a 4D run), in O(|common|·V/64) with an early exit at the first other bit.
   void clip_combinatorial(int j) {
     const std::vector<int>& sg = scratch_sign_;
     ring_.clear();  // the order changes; the cycle is not tracked here
     std::vector<Vert>& out = scratch_verts_;  // reused: its vertices' storage stays allocated
     out.clear();
+    const std::size_t n = v.size(), words = (n + 63) / 64;
+    std::vector<std::uint64_t>& bits = scratch_bits_;  // row k at [k·words, (k+1)·words)
+    bits.assign(h.size() * words, 0);
+    for (std::size_t r = 0; r < n; ++r)
+      for (int t : v[r].tight) bits[static_cast<std::size_t>(t) * words + r / 64] |= std::uint64_t{1} << (r % 64);
+    // The outside vertices q an inside p can share D − 1 constraints with: the OR over the
+    // (D − 1)-subsets of tight(p) of the AND of their rows, masked by the outside vertices; the
+    // same q as trying every outside vertex, in the same (increasing) order. Degenerate p (more
+    // than 8 tight constraints) try every outside vertex.
+    std::vector<std::uint64_t>& outside = scratch_outside_;
+    std::vector<std::uint64_t>& cand = scratch_cand_;
+    outside.assign(words, 0);
+    for (std::size_t q = 0; q < n; ++q)
+      if (sg[q] > 0) outside[q / 64] |= std::uint64_t{1} << (q % 64);
     TightSet common;
-    for (std::size_t p = 0; p < v.size(); ++p) {
-      if (sg[p] >= 0) continue;
-      for (std::size_t q = 0; q < v.size(); ++q) {
-        if (sg[q] <= 0) continue;
-        common_tight(v[p].tight, v[q].tight, common);
-        if (common.size() + 1 < D) continue;
-        bool adjacent = true;
-        for (std::size_t r = 0; r < v.size() && adjacent; ++r) {
-          if (r == p || r == q) continue;
-          if (std::includes(v[r].tight.begin(), v[r].tight.end(), common.begin(), common.end())) adjacent = false;
-        }
-        if (!adjacent) continue;
-        cut_edge(v[p], v[q], j, common, out.emplace_back());
+    auto edge = [&](std::size_t p, std::size_t q) {
+      common_tight(v[p].tight, v[q].tight, common);
+      if (common.size() + 1 < D) return;
+      for (std::size_t w = 0; w < words; ++w) {
+        std::uint64_t x = ~std::uint64_t{0};
+        for (int t : common) x &= bits[static_cast<std::size_t>(t) * words + w];
+        if (w == p / 64) x &= ~(std::uint64_t{1} << (p % 64));
+        if (w == q / 64) x &= ~(std::uint64_t{1} << (q % 64));
+        if (x != 0) return;  // a third vertex is tight on all of common: not an edge
       }
+      cut_edge(v[p], v[q], j, common, out.emplace_back());
+    };
+    for (std::size_t p = 0; p < n; ++p) {
+      if (sg[p] >= 0) continue;
+      const int* T = v[p].tight.begin();
+      const std::size_t k = v[p].tight.size();
+      if (k + 1 < D) continue;  // shares at most k < D − 1 constraints with any q
+      if (k > 8) {
+        for (std::size_t q = 0; q < n; ++q)
+          if (sg[q] > 0) edge(p, q);
+        continue;
+      }
+      cand.assign(words, 0);
+      std::array<std::size_t, D - 1> ix;  // a (D − 1)-subset of positions in T, increasing
+      for (std::size_t i = 0; i + 1 < D; ++i) ix[i] = i;
+      while (true) {
+        for (std::size_t w = 0; w < words; ++w) {
+          std::uint64_t x = outside[w];
+          for (std::size_t i = 0; i + 1 < D; ++i) x &= bits[static_cast<std::size_t>(T[ix[i]]) * words + w];
+          cand[w] |= x;
+        }
+        std::size_t i = D - 1;  // next subset in lexicographic order
+        while (i > 0 && ix[i - 1] == k - (D - 1) + (i - 1)) --i;
+        if (i == 0) break;
+        ++ix[i - 1];
+        for (std::size_t m = i; m + 1 < D; ++m) ix[m] = ix[m - 1] + 1;
+      }
+      for (std::size_t w = 0; w < words; ++w)
+        for (std::uint64_t x = cand[w]; x != 0; x &= x - 1) edge(p, w * 64 + static_cast<std::size_t>(std::countr_zero(x)));
     }
-    for (std::size_t k = 0; k < v.size(); ++k) {
+    for (std::size_t k = 0; k < n; ++k) {
       if (sg[k] > 0) continue;
       if (sg[k] == 0) v[k].tight.push_back(j);
       out.push_back(std::move(v[k]));

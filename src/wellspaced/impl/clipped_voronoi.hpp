@@ -57,27 +57,53 @@ auto WellSpacedSet<D>::Impl::box_dist2_lower(const Pt& v, const IPoint<D>& vi, c
 }
 
 // Exact: does square s meet B(c, |cv|) for some vertex c of C (the certificate region of C)?
-// C is relative to its site v, which sits at the origin; `vb` holds its vertices' bounds.
+// C is relative to its site v, which sits at the origin; `R` holds its vertices' bounds.
+// `d2_lower` ≤ the squared distance from v to s (rigorous): a ball B(c, |cv|) lies within 2|cv| of v,
+// so once 4·|cv|² < d2_lower for the vertices by decreasing |cv|², the rest miss s (issue 11 §5:
+// this test was 45 % of a 4D run). The answer is an "exists": the order in which the vertices are
+// tried (the hint first, then by radius) decides nothing, only how soon it is known.
 template <std::size_t D>
 template <class NT>
-auto WellSpacedSet<D>::Impl::meets_certificate_region(const Polytope<D, NT>& C, const std::vector<VertexBounds>& vb, const Pt& v, const K& s) -> bool {
+auto WellSpacedSet<D>::Impl::meets_certificate_region(const Polytope<D, NT>& C, CertificateRegion& R, const Pt& v, const K& s, double d2_lower) -> bool {
+  const std::vector<VertexBounds>& vb = R.vb;
+  R.undecided.clear();
   if (s.level <= 52) {  // fast path: the square's corners are doubles; plain double arithmetic,
     // each squared gap sum within a relative 2^-49 of its value (≤ 7 roundings), decided only
     // when the margin 2^-48 separates it from the enclosure of |cv|²
     const double h = pow2_neg(s.level);
-    bool undecided = false;
-    for (const VertexBounds& c : vb) {
+    std::array<double, D> sl, sh;
+    for (std::size_t i = 0; i < D; ++i) {
+      sl[i] = static_cast<double>(s.k[i]) * h;
+      sh[i] = sl[i] + h;
+    }
+    // 1: surely meets, −1: surely misses, 0: undecided
+    auto test = [&](const VertexBounds& c) {
       double glo = 0, ghi = 0;
       for (std::size_t i = 0; i < D; ++i) {
-        double sl = static_cast<double>(s.k[i]) * h, sh = sl + h;
-        double a = std::max({0.0, sl - c.hi[i], c.lo[i] - sh}), b = std::max({0.0, sl - c.lo[i], c.hi[i] - sh});
+        const double a = std::max(0.0, std::max(sl[i] - c.hi[i], c.lo[i] - sh[i]));
+        const double b = std::max(0.0, std::max(sl[i] - c.lo[i], c.hi[i] - sh[i]));
         glo += a * a;
         ghi += b * b;
       }
-      if (ghi * (1 + 0x1p-48) < c.r_lo) return true;
-      if (!(glo * (1 - 0x1p-48) > c.r_hi)) undecided = true;
+      if (ghi * (1 + 0x1p-48) < c.r_lo) return 1;
+      if (!(glo * (1 - 0x1p-48) > c.r_hi)) return 0;
+      return -1;
+    };
+    if (R.hint < vb.size() && test(vb[R.hint]) > 0) return true;
+    for (std::uint32_t j : R.by_radius) {
+      const VertexBounds& c = vb[j];
+      if (d2_lower > 4 * c.r_hi) break;  // this ball and all later (smaller) ones miss s
+      const int t = test(c);
+      if (t > 0) {
+        R.hint = j;
+        return true;
+      }
+      if (t == 0) R.undecided.push_back(j);
     }
-    if (!undecided) return false;
+    if (R.undecided.empty()) return false;
+    std::sort(R.undecided.begin(), R.undecided.end());  // the exact tests below in index order
+  } else {
+    for (std::uint32_t j = 0; j < vb.size(); ++j) R.undecided.push_back(j);
   }
   auto b = square_bounds(s);
   const IPoint<D> vabs = point_in<IntervalNT, D>(v);
@@ -85,7 +111,7 @@ auto WellSpacedSet<D>::Impl::meets_certificate_region(const Polytope<D, NT>& C, 
     b[i].first -= vabs[i];
     b[i].second -= vabs[i];
   }
-  for (std::size_t j = 0; j < C.v.size(); ++j) {
+  for (std::uint32_t j : R.undecided) {
     const auto& c = C.v[j];
     IntervalNT gap = 0;
     for (std::size_t i = 0; i < D; ++i) {
@@ -147,7 +173,7 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
     Pt u;
   };
   std::vector<Cand> cand;
-  std::vector<K> late;  // squares popped after NN was fixed
+  std::vector<std::pair<K, double>> late;  // squares popped after NN was fixed, with their heap keys
   double best = std::numeric_limits<double>::infinity();  // upper bound on NN²
   bool nn_fixed = false;
   double limit = std::numeric_limits<double>::infinity();
@@ -200,9 +226,10 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
     });
     clip_from(0);
   };
-  std::vector<VertexBounds> vb;  // bounds of the vertices of C
+  CertificateRegion region;  // bounds of the vertices of C
   unsigned vb_version = ~0u;
-  auto meets = [&](const K& s) {
+  auto meets = [&](const K& s, double d2_lower) {
+    std::vector<VertexBounds>& vb = region.vb;
     if (vb_version != C->version || vb.size() != C->v.size()) {
       vb.clear();
       for (const auto& c : C->v) {
@@ -217,9 +244,14 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
         b.r_hi = r.hi();
         vb.push_back(b);
       }
+      region.by_radius.resize(vb.size());
+      for (std::uint32_t j = 0; j < vb.size(); ++j) region.by_radius[j] = j;
+      std::sort(region.by_radius.begin(), region.by_radius.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return vb[a].r_hi != vb[b].r_hi ? vb[a].r_hi > vb[b].r_hi : a < b;
+      });
       vb_version = C->version;
     }
-    return meets_certificate_region<NT>(*C, vb, v, s);
+    return meets_certificate_region<NT>(*C, region, v, s, d2_lower);
   };
   std::vector<Pt> here;  // the visible vertices of a square, sorted
   while (!heap.empty()) {
@@ -229,8 +261,8 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
     if (!nn_fixed && key > best) fix_nn();
     if (nn_fixed && key > limit) break;
     heap.pop();
-    if (nn_fixed && !(s == start) && !meets(s)) continue;
-    if (nn_fixed) late.push_back(s);
+    if (nn_fixed && !(s == start) && !meets(s, key)) continue;
+    if (nn_fixed) late.push_back({s, key});
     else res.reads.push_back(s);
     std::size_t before = cand.size();
     {
@@ -256,8 +288,8 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
   // The squares read are those of the NN phase and those meeting the certificate region of the
   // FINAL cell: a function of the data, not of the order in which squares were popped (squares
   // popped earlier against a larger region hold only vertices that cannot affect the result).
-  for (const K& s : late)
-    if (meets(s)) res.reads.push_back(s);
+  for (const auto& [s, key] : late)
+    if (meets(s, key)) res.reads.push_back(s);
   std::sort(res.reads.begin(), res.reads.end());
   // exact decision: u ∈ CV iff the face of C on the bisector of v, u has a point within β·NN
   NT r2 = sq<NT>(params.beta) * dist2(rel(res.nn), vq);

@@ -177,8 +177,17 @@ struct WellSpacedSet<D>::Impl {
     std::array<double, D> lo, hi;
     double r_lo, r_hi;
   };
+  // The certificate region of C as the scan tests it: the bounds of C's vertices (vb[j] for C.v[j]),
+  // their indices by decreasing r_hi (ties: index), the vertex whose ball met the last square that
+  // met the region (tried first: neighbouring squares often meet the same ball), and scratch.
+  struct CertificateRegion {
+    std::vector<VertexBounds> vb;
+    std::vector<std::uint32_t> by_radius;
+    std::uint32_t hint = 0;
+    std::vector<std::uint32_t> undecided;
+  };
   template <class NT>
-  static bool meets_certificate_region(const Polytope<D, NT>& C, const std::vector<VertexBounds>& vb, const Pt& v, const K& s);
+  static bool meets_certificate_region(const Polytope<D, NT>& C, CertificateRegion& R, const Pt& v, const K& s, double d2_lower);
   template <class NT>
   CVResult clipped_voronoi_tier(const Pt& v, const Time& t);
   template <class NT>
