@@ -393,9 +393,13 @@ void near_duplicate_pair_case(int k, double rho, double beta, bool want_fine) {
     fine += !v.exact.is_double();
     // the library's exact text (what the CLI prints) read back by the oracle's own reader
     for (std::size_t i = 0; i < D; ++i)
-      if (!v.exact.is_double(i)) EXPECT_EQ(ws::parse_hex_exact(v.exact.text(i)), v.exact.coord(i)) << v.exact.text(i);
+      if (!v.exact.is_double(i)) {
+        EXPECT_EQ(ws::parse_hex_exact(v.exact.text(i)), v.exact.coord(i)) << v.exact.text(i);
+      }
   }
-  if (want_fine) EXPECT_GT(fine, 0u) << what;
+  if (want_fine) {
+    EXPECT_GT(fine, 0u) << what;
+  }
   std::printf("  %s: |M| = %zu, %zu finer than doubles; %s\n", what.c_str(), S.vertices().size(), fine,
               judge<D>(S, what).c_str());
 }

@@ -105,7 +105,9 @@ void double_filter_case(std::uint64_t seed, int trials, int& decided, int& undec
       return v;
     }, exact_sign);
     int s = double_filter::dot_minus_sign<D>(a, x, b);
-    if (s != 0) ASSERT_EQ(s, exact_sign) << "dot, seed " << seed << " trial " << trial;
+    if (s != 0) {
+      ASSERT_EQ(s, exact_sign) << "dot, seed " << seed << " trial " << trial;
+    }
     (s ? decided : undecided)++;
     // |x − c|² − r2
     e.clear();
@@ -118,7 +120,9 @@ void double_filter_case(std::uint64_t seed, int trials, int& decided, int& undec
       return v;
     }, exact_sign);
     s = double_filter::dist2_minus_sign<D>(x, c, r2);
-    if (s != 0) ASSERT_EQ(s, exact_sign) << "dist2, seed " << seed << " trial " << trial;
+    if (s != 0) {
+      ASSERT_EQ(s, exact_sign) << "dist2, seed " << seed << " trial " << trial;
+    }
     (s ? decided : undecided)++;
   }
 }
