@@ -44,7 +44,10 @@ BigStack::BigStack(std::size_t bytes) {
   base_ = static_cast<char*>(p);
   mapped_ = usable + page;
   usable_ = usable;
-  mprotect(base_, page, PROT_NONE);  // guard page: an overflow faults instead of writing below
+  if (mprotect(base_, page, PROT_NONE) != 0) {  // guard page: an overflow faults instead of writing below
+    munmap(p, mapped_);
+    KMR_CHECK(false, "sac::BigStack: cannot protect the guard page");
+  }
   contexts_ = new Contexts;
 }
 
@@ -61,7 +64,7 @@ bool BigStack::contains(const void* p) const {
 // makecontext passes int arguments only: `this` travels as two 32-bit halves.
 void BigStack::enter(unsigned hi, unsigned lo) {
   reinterpret_cast<BigStack*>((static_cast<std::uintptr_t>(hi) << 32) | lo)->body();
-}  // returning resumes uc_link, the caller's context
+}
 
 void BigStack::body() {
   auto& c = *static_cast<Contexts*>(contexts_);
@@ -73,10 +76,12 @@ void BigStack::body() {
   } catch (...) {
     error_ = std::current_exception();
   }
+  // Back to the caller directly, never through this frame's epilogue: once AddressSanitizer has
+  // been told that this stack's frames end (nullptr), no frame of it may be touched again.
 #ifdef KMR_ASAN_FIBERS
-  __sanitizer_start_switch_fiber(nullptr, c.caller_bottom, c.caller_size);  // this run's frames end here
+  __sanitizer_start_switch_fiber(nullptr, c.caller_bottom, c.caller_size);
 #endif
-  (void)c;
+  setcontext(&c.caller);
 }
 
 void BigStack::run(const std::function<void()>& f) {
@@ -96,7 +101,7 @@ void BigStack::run(const std::function<void()>& f) {
   error_ = nullptr;
   running_ = true;
   // getcontext + setcontext rather than swapcontext, whose AddressSanitizer interceptor prints a
-  // warning on stderr; f's return resumes here through uc_link, with `entered` set.
+  // warning on stderr; body() resumes here with setcontext(&c.caller), with `entered` set.
   volatile bool entered = false;
   getcontext(&c.caller);
   if (!entered) {

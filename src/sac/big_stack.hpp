@@ -18,6 +18,8 @@
 //  * run() called from inside f (already on this stack) calls f directly.
 //  * The constructor throws ContractError for a size below PTHREAD_STACK_MIN or one that cannot be
 //    mapped; destruction unmaps (while no run is in progress).
+// A BigStack belongs to one thread at a time (no locking), and f must return or throw: leaving it
+// by longjmp or thread cancellation is not supported.
 // Deterministic: f runs on the caller's thread exactly as it would on the caller's stack.
 // Under AddressSanitizer the switches are announced (__sanitizer_start/finish_switch_fiber).
 #include <cstddef>

@@ -133,9 +133,12 @@ TEST(SacBigStack, RepeatedRunsReuseOneWarmStackOnTheCallersThread) {
   EXPECT_EQ(tops[1], tops[0]);  // every run starts at the same place on the same mapping
   EXPECT_EQ(tops[2], tops[0]);
   for (std::thread::id t : threads) EXPECT_EQ(t, std::this_thread::get_id());  // no thread is created
+  // 4 KiB pages (THP "madvise" or "never", as here; with THP "always" the first run may fault far
+  // less). Later runs fault only for what is not the stack (ASan's fake stacks under
+  // detect_stack_use_after_return=1: ≈ 300), well under a quarter of the first run's.
   EXPECT_GE(faults[0], 2048);
-  EXPECT_LT(faults[1], 256) << "the second run's stack pages should already be mapped";
-  EXPECT_LT(faults[2], 256);
+  EXPECT_LT(faults[1], faults[0] / 4) << "the second run's stack pages should already be mapped";
+  EXPECT_LT(faults[2], faults[0] / 4);
 }
 
 TEST(SacBigStack, NestedRunCallsDirectlyOnTheSameStack) {
