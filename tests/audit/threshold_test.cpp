@@ -9,6 +9,7 @@
 #include <any>
 #include <map>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "audit/audit.hpp"
@@ -37,61 +38,53 @@ Result run_with(const std::string& claim, const std::string& name, F tamper) {
   return results.empty() ? Result{} : results.front();
 }
 // The judged figure replaced by `x` (every call).
-Result with_value(const std::string& claim, const std::string& name, double x) {
-  return run_with<double>(claim, name, [x](double& v, int) { v = x; });
-}
-Result with_series(const std::string& claim, const std::string& name, std::vector<double> xs) {
-  return run_with<std::vector<double>>(claim, name, [&](std::vector<double>& v, int) {
-    EXPECT_EQ(v.size(), xs.size()) << name;
-    v = xs;
+// The judged figure (a number or a series) replaced by `x` at every call.
+template <class T>
+Result with(const std::string& claim, const std::string& name, const T& x) {
+  return run_with<T>(claim, name, [&](T& v, int) {
+    if constexpr (!std::is_same_v<T, double>) {
+      EXPECT_EQ(v.size(), x.size()) << name;
+    }
+    v = x;
   });
 }
+Result with_value(const std::string& claim, const std::string& name, double x) { return with(claim, name, x); }
 std::string word(const Result& r) { return verdict_word(r.verdict); }
 
+// Both sides of one bound: the figure at `inside` reads PASS; at `outside` FAIL, naming `why`.
+template <class T>
+void expect_bound(const std::string& claim, const std::string& name, const T& inside, const T& outside, const std::string& why) {
+  EXPECT_EQ(word(with(claim, name, inside)), "PASS") << name;
+  auto r = with(claim, name, outside);
+  EXPECT_EQ(word(r), "FAIL") << name;
+  EXPECT_TRUE(has(r.verdict.summary, why)) << r.verdict.summary;
+}
+using Series = std::vector<double>;
+
 TEST(AuditThresholds, T4_2_12_OperationsRatioBoundIsStrictlyBelow8) {
-  EXPECT_EQ(word(with_value("T4.2.12", "T4.2.12 max/min ops ratio", 7.99)), "PASS");
-  auto r = with_value("T4.2.12", "T4.2.12 max/min ops ratio", 8);
-  EXPECT_EQ(word(r), "FAIL");
-  EXPECT_TRUE(has(r.verdict.summary, "vary by more than a factor 8")) << r.verdict.summary;
+  expect_bound("T4.2.12", "T4.2.12 max/min ops ratio", 7.99, 8.0, "vary by more than a factor 8");
 }
 
 TEST(AuditThresholds, L4_2_11_CentresRatioBoundIsStrictlyBelow4) {
-  EXPECT_EQ(word(with_value("L4.2.11", "L4.2.11 max/min centres ratio", 3.99)), "PASS");
-  auto r = with_value("L4.2.11", "L4.2.11 max/min centres ratio", 4);
-  EXPECT_EQ(word(r), "FAIL");
-  EXPECT_TRUE(has(r.verdict.summary, "vary by a factor 4 ≥ 4")) << r.verdict.summary;
+  expect_bound("L4.2.11", "L4.2.11 max/min centres ratio", 3.99, 4.0, "vary by a factor 4 ≥ 4");
 }
 
 // Quick mode: ε = 2^-2 and 2^-6. Integer-time Steiner/n must grow by more than 1; half-integer
 // Steiner/n may vary by less than 1.15x.
 TEST(AuditThresholds, L4_4_2_IntegerTimesMustGrowHalfIntegersStayFlat) {
-  EXPECT_EQ(word(with_series("L4.4.2", "L4.4.2 integer-time Steiner/n", {3, 4.01})), "PASS");
-  auto flat = with_series("L4.4.2", "L4.4.2 integer-time Steiner/n", {3, 4});
-  EXPECT_EQ(word(flat), "FAIL");
-  EXPECT_TRUE(has(flat.verdict.summary, "does not grow")) << flat.verdict.summary;
-  EXPECT_EQ(word(with_series("L4.4.2", "L4.4.2 half-integer Steiner/n", {2, 2.28})), "PASS");
-  auto wavy = with_series("L4.4.2", "L4.4.2 half-integer Steiner/n", {2, 2.3});
-  EXPECT_EQ(word(wavy), "FAIL");
-  EXPECT_TRUE(has(wavy.verdict.summary, "half-integer Steiner/n varies by a factor 1.15")) << wavy.verdict.summary;
+  expect_bound("L4.4.2", "L4.4.2 integer-time Steiner/n", Series{3, 4.01}, Series{3, 4}, "does not grow");
+  expect_bound("L4.4.2", "L4.4.2 half-integer Steiner/n", Series{1, 1.1499}, Series{1, 1.15},
+               "half-integer Steiner/n varies by a factor 1.15");
 }
 
 TEST(AuditThresholds, L4_4_1_PerVertexGrowthAtMost1_5AndTotalBelow2) {
-  EXPECT_EQ(word(with_value("L4.4.1", "L4.4.1 per-vertex growth", 1.5)), "PASS");
-  auto grows = with_value("L4.4.1", "L4.4.1 per-vertex growth", 1.51);
-  EXPECT_EQ(word(grows), "FAIL");
-  EXPECT_TRUE(has(grows.verdict.summary, "grow by 1.51 > 1.5")) << grows.verdict.summary;
-  EXPECT_EQ(word(with_value("L4.4.1", "L4.4.1 total max/min", 1.99)), "PASS");
-  auto total = with_value("L4.4.1", "L4.4.1 total max/min", 2);
-  EXPECT_EQ(word(total), "FAIL");
-  EXPECT_TRUE(has(total.verdict.summary, "certificates ÷ |M| vary by a factor 2 ≥ 2")) << total.verdict.summary;
+  expect_bound("L4.4.1", "L4.4.1 per-vertex growth", 1.5, 1.51, "grow by 1.51 > 1.5");
+  expect_bound("L4.4.1", "L4.4.1 total max/min", 1.99, 2.0, "certificates ÷ |M| vary by a factor 2 ≥ 2");
 }
 
 // Quick mode: log2 Δ = 10 and 20; the ratio at the largest Δ may be at most twice the first.
 TEST(AuditThresholds, T4_3_7_UpdateOperationsMayAtMostDouble) {
-  EXPECT_EQ(word(with_series("T4.3.7", "T4.3.7 ops per update ÷ lg Δ", {5, 10})), "PASS");
-  auto r = with_series("T4.3.7", "T4.3.7 ops per update ÷ lg Δ", {5, 10.1});
-  EXPECT_EQ(word(r), "FAIL");
-  EXPECT_TRUE(has(r.verdict.summary, "grow by 2.02 > 2")) << r.verdict.summary;
+  expect_bound("T4.3.7", "T4.3.7 ops per update ÷ lg Δ", Series{5, 10}, Series{5, 10.1}, "grow by 2.02 > 2");
 }
 
 TEST(AuditThresholds, T3_3_8_SquaresPerCallOrSteinerPerFillThatGrowFail) {
@@ -126,17 +119,11 @@ TEST(AuditThresholds, L3_3_15_NoAffectedVertexOrOneTooFarFails) {
 
 // Quick mode: Δ = 2^10, 2^20, 2^30; max/min of operations per update ÷ log2 Δ at most 3.
 TEST(AuditThresholds, T3_4_3_OperationsPerLogDeltaWithinAFactor3) {
-  EXPECT_EQ(word(with_series("T3.4.3", "T3.4.3 ops per update ÷ lg Δ", {2, 6, 4})), "PASS");
-  auto r = with_series("T3.4.3", "T3.4.3 ops per update ÷ lg Δ", {2, 6.01, 4});
-  EXPECT_EQ(word(r), "FAIL");
-  EXPECT_TRUE(has(r.verdict.summary, "vary by more than 3x")) << r.verdict.summary;
+  expect_bound("T3.4.3", "T3.4.3 ops per update ÷ lg Δ", Series{2, 6, 4}, Series{2, 6.01, 4}, "vary by more than 3x");
 }
 
 TEST(AuditThresholds, L3_4_4_SteinerChangesMustGrowBy1_5) {
-  EXPECT_EQ(word(with_series("L3.4.4", "L3.4.4 Steiner changes", {10, 5, 15})), "PASS");
-  auto r = with_series("L3.4.4", "L3.4.4 Steiner changes", {10, 20, 14.9});
-  EXPECT_EQ(word(r), "FAIL");
-  EXPECT_TRUE(has(r.verdict.summary, "grew by less than 1.5x")) << r.verdict.summary;
+  expect_bound("L3.4.4", "L3.4.4 Steiner changes", Series{10, 5, 15}, Series{10, 20, 14.9}, "grew by less than 1.5x");
 }
 
 TEST(AuditThresholds, T3_4_5_RatioBelowC0OrFallingFails) {
@@ -159,10 +146,7 @@ TEST(AuditThresholds, T3_4_3_SpeedUpdateSlowerThanFromScratchFails) {
 }
 
 TEST(AuditThresholds, S1_3_2_WorkGrowingFourfoldFails) {
-  EXPECT_EQ(word(with_value("S1.3.2-monotone-reuse", "S1.3.2 growth map", 3.99)), "PASS");
-  auto r = with_value("S1.3.2-monotone-reuse", "S1.3.2 growth map", 4);
-  EXPECT_EQ(word(r), "FAIL");
-  EXPECT_TRUE(has(r.verdict.summary, "grew by 4x or more")) << r.verdict.summary;
+  expect_bound("S1.3.2-monotone-reuse", "S1.3.2 growth map", 3.99, 4.0, "grew by 4x or more");
 }
 
 // S1.3.4: correctness (outputs) decides PASS/FAIL, the issue 8 targets (overheads, map's bytes)
