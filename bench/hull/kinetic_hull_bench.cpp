@@ -40,15 +40,15 @@ struct Time {
 };
 struct Stamp {
   std::chrono::steady_clock::time_point wall = std::chrono::steady_clock::now();
-  double faults = thread_faults();
-  static double thread_faults() {
+  double faults = process_faults();
+  static double process_faults() {
     rusage u{};
     getrusage(RUSAGE_SELF, &u);  // the whole process
     return double(u.ru_minflt);
   }
 };
 Time since(const Stamp& t0) {
-  return {std::chrono::duration<double>(std::chrono::steady_clock::now() - t0.wall).count(), Stamp::thread_faults() - t0.faults};
+  return {std::chrono::duration<double>(std::chrono::steady_clock::now() - t0.wall).count(), Stamp::process_faults() - t0.faults};
 }
 Time min(const Time& a, const Time& b) { return {std::min(a.wall, b.wall), std::min(a.faults, b.faults)}; }
 Time per(const Time& t, double k) { return {t.wall / k, t.faults / k}; }
