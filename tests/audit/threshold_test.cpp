@@ -42,7 +42,7 @@ Result run_with(const std::string& claim, const std::string& name, F tamper) {
 template <class T>
 Result with(const std::string& claim, const std::string& name, const T& x) {
   return run_with<T>(claim, name, [&](T& v, int) {
-    if constexpr (!std::is_same_v<T, double>) {
+    if constexpr (!std::is_arithmetic_v<T>) {
       EXPECT_EQ(v.size(), x.size()) << name;
     }
     v = x;
@@ -115,6 +115,28 @@ TEST(AuditThresholds, L3_3_15_NoAffectedVertexOrOneTooFarFails) {
   EXPECT_EQ(word(far), "FAIL");
   auto near = run_with<double>("L3.3.15", "L3.3.15 max |v vhat|/NN(v)", [](double& v, int call) { v = call == 1 ? 2 : 1; });
   EXPECT_EQ(word(near), "PASS") << near.verdict.summary;
+}
+
+// Quick mode: three series (2D uniform, 2D clustered, 3D uniform). An operation at rank r with
+// NN_inf(v) >= rho^(r+1) fails; so does a min that falls, or a max that grows, more than 2x from the
+// smallest n to the largest, in any series.
+TEST(AuditThresholds, L3_3_6_UpperBoundViolationOrRatiosMovingMoreThan2xFail) {
+  expect_bound<std::size_t>("L3.3.6", "L3.3.6 operations with NN_inf >= rho^(r+1)", 0, 1, "reached rho^(r+1)");
+  // Each series becomes {1, ..., 1, last}.
+  auto ends_at = [](const std::string& name, double last, int series) {
+    return run_with<Series>("L3.3.6", name, [=](Series& v, int call) {
+      for (double& x : v) x = 1;
+      if (call == series) v.back() = last;
+    });
+  };
+  for (int series : {0, 2}) {
+    EXPECT_EQ(word(ends_at("L3.3.6 min NN_inf/rho^r per n", 0.5, series)), "PASS") << series;
+    auto falls = ends_at("L3.3.6 min NN_inf/rho^r per n", 0.4999, series);
+    EXPECT_EQ(word(falls), "FAIL") << series;
+    EXPECT_TRUE(has(falls.verdict.summary, "moved more than 2x")) << falls.verdict.summary;
+    EXPECT_EQ(word(ends_at("L3.3.6 max NN_inf/rho^r per n", 2, series)), "PASS") << series;
+    EXPECT_EQ(word(ends_at("L3.3.6 max NN_inf/rho^r per n", 2.0001, series)), "FAIL") << series;
+  }
 }
 
 // Quick mode: Δ = 2^10, 2^20, 2^30; max/min of operations per update ÷ log2 Δ at most 3.
