@@ -36,7 +36,7 @@ NodePool::~NodePool() {
   for (void* c : chunks_) std::free(c);
 }
 
-Runtime::Runtime() : keys_(1024) {}
+Runtime::Runtime() : buckets_(1024, nullptr) {}
 
 Runtime::~Runtime() {
   for (Stamp* s = om_.base()->next; s;) {
@@ -266,23 +266,34 @@ void Runtime::index(Node* n, ModBase* anchor) {
     l->hpprev = &anchor->keyed;
     return;
   }
-  keys_.insert(l->hash, n);
+  if (indexed_ + 1 > buckets_.size()) {
+    std::vector<Node*> old(buckets_.size() * 2, nullptr);
+    old.swap(buckets_);
+    indexed_ = 0;
+    for (Node* b : old)
+      for (Node* k = b; k;) {
+        Node* nx = key_link(k)->hnext;
+        index(k, nullptr);
+        k = nx;
+      }
+  }
+  Node** b = &buckets_[l->hash & (buckets_.size() - 1)];
+  l->hnext = *b;
+  if (*b) key_link(*b)->hpprev = &l->hnext;
+  *b = n;
+  l->hpprev = b;
   set_in_table(n, true);
+  ++indexed_;
 }
 
 void Runtime::unindex(Node* n) {
   KeyLink* l = key_link(n);
-  if (in_table(n)) {
-    bool erased = keys_.erase(l->hash, n);
-    KMR_CHECK(erased, "sac: an indexed node is missing from the key index");
-    set_in_table(n, false);
-    return;
-  }
   if (!l->hpprev) return;
   *l->hpprev = l->hnext;
   if (l->hnext) key_link(l->hnext)->hpprev = l->hpprev;
   l->hnext = nullptr;
   l->hpprev = nullptr;
+  if (in_table(n)) --indexed_;
 }
 
 // ---- change propagation (§1.3.1) --------------------------------------------------------------
@@ -568,7 +579,7 @@ Stats Runtime::stats() const {
   s.trace_nodes = live_nodes_;
   s.live_mods = live_owned_;
   s.input_mods = inputs_.size();
-  s.bytes = bytes_ + om_.bytes() + keys_.bytes() + heap_.capacity() * sizeof(void*);
+  s.bytes = bytes_ + om_.bytes() + buckets_.capacity() * sizeof(void*) + heap_.capacity() * sizeof(void*);
   s.om_relabels = om_.relabels();
   return s;
 }

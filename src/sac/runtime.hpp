@@ -61,7 +61,6 @@
 #include <vector>
 
 #include "exact/error.hpp"
-#include "sac/key_index.hpp"
 #include "sac/order.hpp"
 
 namespace kmr::sac {
@@ -997,15 +996,8 @@ class Runtime {
   void unindex_all(ModBase* m) {
     while (m->keyed) unindex(m->keyed);
   }
-  // f(n) for every indexed node that may carry a key with hash h: its anchor's list, or the
-  // index's entries stored under h (the caller compares the full key and picks by time).
-  template <class F>
-  void for_each_keyed(std::uint64_t h, const ModBase* anchor, F&& f) const {
-    if (anchor) {
-      for (Node* n = anchor->keyed; n; n = key_link(n)->hnext) f(n);
-      return;
-    }
-    keys_.for_each(h, [&f](void* p) { f(static_cast<Node*>(p)); });
+  Node* chain(std::uint64_t h, const ModBase* anchor) const {
+    return anchor ? anchor->keyed : buckets_[h & (buckets_.size() - 1)];
   }
   template <class M, class A>
   static bool same_key(const Node* n, std::uint64_t h, const Label& label, const decltype(A::keys)& key) {
@@ -1018,32 +1010,30 @@ class Runtime {
   template <class M, class A>
   A* find_alloc(const Label& label, std::uint64_t h, const decltype(A::keys)& key, const ModBase* anchor) const {
     A* best = nullptr;
-    for_each_keyed(h, anchor, [&](Node* n) {
-      if (!same_key<M, A>(n, h, label, key) || !in_window(n)) return;
+    for (Node* n = chain(h, anchor); n; n = key_link(n)->hnext) {
+      if (!same_key<M, A>(n, h, label, key) || !in_window(n)) continue;
       if (!best || OrderList::before(n, best)) best = static_cast<A*>(n);
-    });
+    }
     return best;
   }
   // A live allocation with the same full key at or before the current time belongs to this
   // execution too.
   template <class M, class A>
   bool taken(const Label& label, std::uint64_t h, const decltype(A::keys)& key, const ModBase* anchor) const {
-    bool found = false;
-    for_each_keyed(h, anchor, [&](Node* n) {
-      if (!found && same_key<M, A>(n, h, label, key) && (OrderList::before(n, now_) || n == now_)) found = true;
-    });
-    return found;
+    for (Node* n = chain(h, anchor); n; n = key_link(n)->hnext)
+      if (same_key<M, A>(n, h, label, key) && (OrderList::before(n, now_) || n == now_)) return true;
+    return false;
   }
   template <class M, class Key>
   M* find_memo(std::uint64_t h, const Label& label, const Key& key, const ModBase* anchor) const {
     M* best = nullptr;
-    for_each_keyed(h, anchor, [&](Node* n) {  // memo and memo-read nodes (M::kKind)
-      if (n->kind != M::kKind || key_link(n)->hash != h || key_link(n)->tag != &M::desc) return;
+    for (Node* n = chain(h, anchor); n; n = key_link(n)->hnext) {  // memo and memo-read nodes (M::kKind)
+      if (n->kind != M::kKind || key_link(n)->hash != h || key_link(n)->tag != &M::desc) continue;
       auto* m = static_cast<M*>(n);
-      if ((m->label != &label && std::strcmp(m->label->name, label.name) != 0) || !(m->key == key)) return;
-      if (!in_window(m) || !OrderList::before(m->end, finger_)) return;
+      if ((m->label != &label && std::strcmp(m->label->name, label.name) != 0) || !(m->key == key)) continue;
+      if (!in_window(m) || !OrderList::before(m->end, finger_)) continue;
       if (!best || OrderList::before(m, best)) best = m;
-    });
+    }
     return best;
   }
 
@@ -1084,7 +1074,8 @@ class Runtime {
   MemoReadNode* open_ = nullptr;     // the memo_read node whose closure runs innermost (inline writes of its dest)
   std::vector<ModBase*> unwritten_;   // modifiables whose writer was discarded in this propagation
   std::vector<ReadNode*> heap_;
-  KeyIndex keys_;  // nodes whose key has no anchor (exact-key index, key_index.hpp)
+  std::vector<Node*> buckets_;
+  std::size_t indexed_ = 0;
   std::vector<ModBase*> dead_;
   std::unordered_set<ModBase*> inputs_;  // lookup and freeing only
   std::uint64_t live_nodes_ = 0;
