@@ -12,6 +12,7 @@ constexpr std::uint32_t kLabelEnd = OrderList::kLabelEnd;
 constexpr std::uint32_t kAppendStep = OrderList::kAppendStep;
 constexpr std::uint64_t kGroupAppendStep = std::uint64_t{1} << 32;   // 2^30 appended groups fit
 static_assert((std::uint64_t{OrderList::kGroupMax} + 1) * kAppendStep <= kLabelEnd);
+static_assert(OrderList::kAppendFill >= 1 && OrderList::kAppendFill <= OrderList::kGroupMax);
 }
 
 OrderList::OrderList() {
@@ -123,10 +124,11 @@ void OrderList::split(OmGroup* g) {
 void OrderList::insert_after_slow(Stamp* x, Stamp* y) {
   Stamp* nx = x->next;
   bool at_group_end = !nx || nx->group != x->group;
-  if (x->group->size >= kGroupMax) {
+  if (x->group->size >= kGroupMax || (!nx && x->group->size >= kAppendFill)) {
     if (at_group_end) {
-      // Appending after a full group's last stamp (the common case: a run appends at the end of
-      // the trace): start a new group instead of splitting, so no stamp is relabelled.
+      // Appending after a full group's last stamp, or at the end of the list after kAppendFill
+      // stamps (the common case: a run appends at the end of the trace): start a new group
+      // instead of splitting, so no stamp is relabelled.
       OmGroup* h = insert_group_after(x->group);
       h->first = y;
       h->size = 1;

@@ -37,6 +37,10 @@ struct OmGroup {
 class OrderList {
  public:
   static constexpr std::uint32_t kGroupMax = 64;
+  // Appends at the end of the list (an initial run) fill a group to kAppendFill stamps only, so a
+  // group of the initial trace takes kGroupMax − kAppendFill insertions by re-execution before it
+  // splits (a split walks and relabels the group's stamps, cold trace: spec/sac.md, branch sac12).
+  static constexpr std::uint32_t kAppendFill = 32;
 
   OrderList();
   ~OrderList();
@@ -50,7 +54,7 @@ class OrderList {
   static constexpr std::uint32_t kAppendStep = std::uint32_t{1} << 25;  // kGroupMax + 1 steps fit in 32 bits
   void insert_after(Stamp* x, Stamp* y) {  // y (unlinked) goes right after x
     OmGroup* g = x->group;
-    if (!x->next && g->size < kGroupMax && kLabelEnd - x->label > 2 * kAppendStep) {
+    if (!x->next && g->size < kAppendFill && kLabelEnd - x->label > 2 * kAppendStep) {
       // Fast path, appending at the end of the list (what an initial run does).
       y->label = x->label + kAppendStep;
       y->group = g;

@@ -127,6 +127,27 @@ TEST(SacOrder, S1_3_DenseRegionInTheMiddle) {
   RecordProperty("relabels_per_insert", std::to_string(static_cast<double>(h.om.relabels()) / h.inserts));
 }
 
+// Branch sac12: appends fill a group to kAppendFill stamps, so a group of an initial run takes
+// kGroupMax − kAppendFill insertions in its middle (re-execution) before it splits. Hand-derived:
+// the base's group holds the base and 31 appended stamps, then one group per 32 appends.
+TEST(SacOrder, S1_3_AppendsLeaveRoomForInsertionsBeforeASplit) {
+  RecordProperty("claim", "S1.3.3-order-maintenance");
+  static_assert(OrderList::kGroupMax == 64 && OrderList::kAppendFill == 32, "hand-derived counts below");
+  Harness h;
+  std::mt19937_64 rng(7);
+  std::vector<Stamp*> run;
+  Stamp* last = h.om.base();
+  for (int i = 0; i < 320; ++i) run.push_back(last = h.insert_after(last));
+  EXPECT_EQ(h.om.groups(), 11u);  // 1 + ceil((320 − 31) / 32)
+  EXPECT_EQ(h.om.splits(), 0u);
+  Stamp* x = run[40];  // in the second group (stamps 31..62 of the run)
+  for (int i = 0; i < 32; ++i) x = h.insert_after(x);
+  EXPECT_EQ(h.om.splits(), 0u) << "32 insertions fit in a group filled to 32 by appends";
+  h.insert_after(x);
+  EXPECT_EQ(h.om.splits(), 1u);
+  h.verify(rng);
+}
+
 TEST(SacOrder, BaseCannotBeRemoved) {
   OrderList om;
   EXPECT_THROW(om.remove(om.base()), kmr::ContractError);
