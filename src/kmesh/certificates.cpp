@@ -84,14 +84,18 @@ int nearest_witness(const Mesh& m, const Considered& c, const Point2& s0) {
   return w;
 }
 
+// Integer work over the spanner's lists (sorted by id): no per-vertex set is built; `mark` stamps the
+// vertices already listed (the cousins of one (x, ℓ), the earlier neighbours of one satellite).
 std::vector<CertificateSpec> certificate_specs(const Mesh& m, const WitnessChoice& witness) {
   const Spanner& S = m.spanner;
   const int N = static_cast<int>(m.size());
   std::vector<CertificateSpec> out;
+  std::vector<std::size_t> mark(N, 0);
+  std::size_t stamp = 0;
+  std::vector<int> cousins;
   for (int x = 0; x < N; ++x) {
     if (x != S.root()) out.push_back({Certificate::ParentChild, x, S.parent(x), S.top(x) + 1, false});
     for (auto& [l, list] : S.all_neighbors(x)) {
-      std::set<int> nb(list.begin(), list.end());
       for (int y : list)
         if (y > x) {
           out.push_back({Certificate::Separation, x, y, l, true});
@@ -100,15 +104,21 @@ std::vector<CertificateSpec> certificate_specs(const Mesh& m, const WitnessChoic
       // Potential neighbours: cousins (children of the (l+1)-neighbours of x's rank-(l+1) representative).
       if (l >= S.top_rank()) continue;
       int r = S.rep(x, l + 1);
-      std::vector<int> fam = S.neighbors(r, l + 1);
-      fam.push_back(r);
-      std::set<int> cousins;
-      for (int z : fam) {
-        cousins.insert(z);
-        for (int y : S.kids(z, l)) cousins.insert(y);
+      ++stamp;
+      cousins.clear();
+      auto add = [&](int y) {
+        if (y > x && mark[y] != stamp) mark[y] = stamp, cousins.push_back(y);
+      };
+      add(r);
+      for (int y : S.kids(r, l)) add(y);
+      for (int z : S.neighbors(r, l + 1)) {
+        add(z);
+        for (int y : S.kids(z, l)) add(y);
       }
+      std::sort(cousins.begin(), cousins.end());
       for (int y : cousins)
-        if (y > x && !nb.count(y) && S.top(y) >= l) out.push_back({Certificate::Potential, x, y, l, true});
+        if (!std::binary_search(list.begin(), list.end(), y) && S.top(y) >= l)
+          out.push_back({Certificate::Potential, x, y, l, true});
     }
   }
   // Conversion decisions (§4.3).
@@ -120,11 +130,13 @@ std::vector<CertificateSpec> certificate_specs(const Mesh& m, const WitnessChoic
       KMR_CHECK(w >= 0, "certificates: a satellite not converted has no vertex in its ball");
       out.push_back({Certificate::BallNotEmpty, c.nucleus, w, c.rank, false, c.nucleus, c.ray});
     } else {
-      std::set<int> seen;
+      ++stamp;
       for (Rank l = c.rank - 6; l <= c.rank - 1; ++l)
         for (int v : S.neighbors(c.vertex, l))
-          if (v < c.vertex && seen.insert(v).second)
+          if (v < c.vertex && mark[v] != stamp) {
+            mark[v] = stamp;
             out.push_back({Certificate::BallEmpty, c.vertex, v, c.rank, true, c.nucleus, c.ray});
+          }
     }
   }
   // Delaunay: every triangle stays counter-clockwise, and every interior edge locally Delaunay.

@@ -156,10 +156,14 @@ void KineticMesh::recertify() {
       ++created_;
     }
   }
+  // The witnesses, read from the kept ball-not-empty certificates only: keys are kind-major, so they
+  // are one contiguous range of certs_ (S_N's kinds are shifted by 16).
   witness_.clear();
-  for (auto& [key, k] : certs_)
-    if (std::get<0>(key) == Certificate::BallNotEmpty)
-      witness_[{std::get<2>(key), std::get<3>(key), std::get<1>(key)}] = std::get<4>(key);
+  constexpr int kMin = std::numeric_limits<int>::min();
+  for (auto w = certs_.lower_bound(Key{Certificate::BallNotEmpty, std::numeric_limits<Rank>::min(), kMin, kMin, kMin, kMin});
+       w != certs_.end() && std::get<0>(w->first) == Certificate::BallNotEmpty; ++w)
+    witness_.emplace_hint(witness_.end(), std::tuple{std::get<2>(w->first), std::get<3>(w->first), std::get<1>(w->first)},
+                          std::get<4>(w->first));
 }
 
 void KineticMesh::unqueue(const Key& key, const Kept& k) {

@@ -3,10 +3,13 @@
 // moved mesh still passes the brute-force spanner, ball and Delaunay checks (L4.3.1).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <tuple>
 
 #include "kmesh/certificates.hpp"
 #include "kmesh/invariants.hpp"
+#include "kmesh/update.hpp"
 #include "poly/sturm.hpp"
 
 using namespace kmr::kmesh;
@@ -75,4 +78,68 @@ TEST(Certificates, L4_3_1_HoldAtZeroAndCertifyUntilTheFirstFailure) {
     }
   }
   EXPECT_GE(checked, 6);
+}
+
+// certificate_specs (kmesh12: stamps and sorted lists instead of per-vertex sets) against a
+// brute-force enumeration sharing none of its loops: potential-neighbour pairs from the parent
+// pointers (y is a cousin of x at ℓ iff rep(y, ℓ+1) — y itself, or its parent when top(y) = ℓ — is
+// r = rep(x, ℓ+1) or an (ℓ+1)-neighbour of r), ball-empty pairs from the distances
+// (|s v| ≤ c·2^ℓ′ at the highest ℓ′ ∈ [ℓ−6, ℓ−1] where both are centers). Compared as multisets of
+// (kind, a, b, rank) on constructed meshes and on an updated one.
+TEST(Certificates, SpecsEqualABruteForceEnumeration) {
+  using K = Certificate::Kind;
+  using Row = std::tuple<int, int, int, Rank>;
+  auto expected = [](const Mesh& m) {
+    const Spanner& S = m.spanner;
+    const int N = static_cast<int>(m.size());
+    std::vector<Row> out;
+    for (int x = 0; x < N; ++x)
+      for (auto& [l, list] : S.all_neighbors(x)) {
+        if (l >= S.top_rank()) continue;
+        const int r = S.rep(x, l + 1);
+        const std::vector<int>& rn = S.neighbors(r, l + 1);
+        auto in_family = [&](int z) { return z == r || std::find(rn.begin(), rn.end(), z) != rn.end(); };
+        for (int y = x + 1; y < N; ++y) {
+          if (S.top(y) < l || std::find(list.begin(), list.end(), y) != list.end()) continue;
+          const int ry = S.top(y) >= l + 1 ? y : S.parent(y);
+          if (in_family(ry)) out.push_back({K::Potential, x, y, l});
+        }
+      }
+    for (const Considered& c : m.considered) {
+      if (!c.converted) continue;
+      for (int v = 0; v < c.vertex; ++v) {
+        const Rank l = std::min({c.rank - 1, S.top(v), S.top(c.vertex)});
+        if (l >= c.rank - 6 && within(S.position(v), S.position(c.vertex), kC, l))
+          out.push_back({K::BallEmpty, c.vertex, v, c.rank});
+      }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  auto listed = [](const Mesh& m) {
+    std::vector<Row> out;
+    for (auto& s : certificate_specs(m))
+      if (s.kind == K::Potential || s.kind == K::BallEmpty) out.push_back({s.kind, s.a, s.b, s.rank});
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  std::mt19937_64 rng(29);
+  std::size_t potential = 0, ball_empty = 0;
+  for (int trial = 0; trial < 3; ++trial) {
+    std::uniform_int_distribution<int> d(-60, 60);
+    std::vector<InputPoint> in;
+    for (int i = 0; i < 4 + trial; ++i) in.push_back({Integer(d(rng)), Integer(d(rng))});
+    std::sort(in.begin(), in.end());
+    in.erase(std::unique(in.begin(), in.end()), in.end());
+    Updater u(in);
+    Mesh m = u.mesh();
+    auto want = expected(m);
+    EXPECT_EQ(listed(m), want) << "seed 29, trial " << trial << ", construction";
+    for (auto& [k, a, b, l] : want) (k == K::Potential ? potential : ball_empty) += 1;
+    u.insert({Integer(d(rng) + 200), Integer(d(rng))});
+    Mesh m2 = u.mesh();
+    EXPECT_EQ(listed(m2), expected(m2)) << "seed 29, trial " << trial << ", after an insertion";
+  }
+  EXPECT_GT(potential, 0u);
+  EXPECT_GT(ball_empty, 0u);
 }
