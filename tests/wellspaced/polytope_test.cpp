@@ -434,3 +434,160 @@ TEST(WellspacedPolytope, SolveRowsEnclosesTheExactVertexAtSampledPointsOfTheEncl
   EXPECT_GT(enclosed, 560);  // random, tiny and most nearly dependent ones
   EXPECT_GT(tight, 180);     // of the 213 random ones with widths of a few ulps
 }
+
+// clip_combinatorial's bit rows (issue 11 §5, ws12), differentially: 3D cells with more than 64
+// vertices (two words per row) and a vertex with 12 tight constraints (the apex of a cone; more
+// than 8, so the "try every outside vertex" branch runs when it is inside, and its rows mask the
+// other vertices' partners when it is cut off). After each cut the vertices and their tight sets
+// must equal a brute-force enumeration that shares no code with Polytope: every triple of the
+// (integer) constraints solved by Cramer's rule in 128-bit integers, kept if it satisfies all
+// constraints, its tight set recomputed by exact integer evaluation of every constraint.
+namespace {
+struct IntPlane {  // a·x ≤ b, small integers
+  std::array<std::int64_t, 3> a;
+  std::int64_t b;
+};
+using I128 = __int128;
+struct IntVertex {  // x = num / den, den > 0; tight: the constraints with a·x = b
+  std::array<I128, 3> num;
+  I128 den;
+  std::vector<int> tight;
+};
+I128 det3(const std::array<std::array<I128, 3>, 3>& m) {
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+std::vector<IntVertex> brute_vertices(const std::vector<IntPlane>& H) {
+  std::vector<IntVertex> out;
+  const std::size_t m = H.size();
+  auto side = [&](const IntPlane& h, const IntVertex& x) {  // sign of a·x − b (den > 0)
+    I128 s = -static_cast<I128>(h.b) * x.den;
+    for (int i = 0; i < 3; ++i) s += static_cast<I128>(h.a[i]) * x.num[i];
+    return (s > 0) - (s < 0);
+  };
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t j = i + 1; j < m; ++j)
+      for (std::size_t k = j + 1; k < m; ++k) {
+        std::array<std::array<I128, 3>, 3> A;
+        const IntPlane* r[3] = {&H[i], &H[j], &H[k]};
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) A[a][b] = r[a]->a[b];
+        I128 d = det3(A);
+        if (d == 0) continue;
+        IntVertex x;
+        for (int c = 0; c < 3; ++c) {
+          auto Ac = A;
+          for (int a = 0; a < 3; ++a) Ac[a][c] = r[a]->b;
+          x.num[c] = det3(Ac);
+        }
+        x.den = d;
+        if (d < 0) {
+          x.den = -d;
+          for (auto& n : x.num) n = -n;
+        }
+        bool feasible = true;
+        for (const IntPlane& h : H)
+          if (side(h, x) > 0) {
+            feasible = false;
+            break;
+          }
+        if (!feasible) continue;
+        bool seen = false;  // the same point from another triple
+        for (const IntVertex& y : out) {
+          bool same = true;
+          for (int c = 0; c < 3; ++c) same = same && x.num[c] * y.den == y.num[c] * x.den;
+          if (same) seen = true;
+        }
+        if (seen) continue;
+        for (std::size_t t = 0; t < m; ++t)
+          if (side(H[t], x) == 0) x.tight.push_back(static_cast<int>(t));
+        out.push_back(std::move(x));
+      }
+  return out;
+}
+}  // namespace
+
+TEST(WellspacedPolytope, ClipCombinatorialMatchesBruteForceEnumerationOnLargeDegenerateCells) {
+  const unsigned seed = 20261203;
+  std::printf("seed %u (replay: the seed is fixed in the test)\n", seed);
+  std::mt19937 rng(seed);
+  std::vector<IntPlane> H;
+  for (int i = 0; i < 3; ++i) {  // the box [-4, 4]^3 in Polytope::box's constraint order
+    IntPlane up{{0, 0, 0}, 4}, dn{{0, 0, 0}, 4};
+    up.a[i] = 1;
+    dn.a[i] = -1;
+    H.push_back(up);
+    H.push_back(dn);
+  }
+  Polytope<3> P = Polytope<3>::box({Q(-4), Q(-4), Q(-4)}, {Q(4), Q(4), Q(4)});
+  auto to_q = [](const IntPlane& h) {
+    Halfspace<3, Q> q;
+    for (int i = 0; i < 3; ++i) q.a[i] = Q(h.a[i]);
+    q.b = Q(h.b);
+    return q;
+  };
+  int checked = 0, checked_big = 0, apex_inside = 0, apex_cut_off = 0;
+  std::size_t most_tight = 0;
+  auto cut = [&](const IntPlane& h, bool check) {
+    // the state before the cut: more than 64 vertices, a vertex with more than 8 tight constraints
+    std::size_t before_tight = 0;
+    for (const auto& x : P.v) before_tight = std::max(before_tight, x.tight.size());
+    const bool big = P.v.size() > 64 && before_tight > 8;
+    const unsigned version = P.version;
+    H.push_back(h);
+    P.clip(to_q(h));
+    if (!check) return;
+    ++checked;
+    if (big && P.version != version) ++checked_big;  // clip_combinatorial ran on the big cell
+    std::vector<IntVertex> want = brute_vertices(H);
+    ASSERT_EQ(P.v.size(), want.size()) << "cut " << H.size() - 1 << ": vertex count";
+    for (const auto& x : P.v) {
+      most_tight = std::max(most_tight, x.tight.size());
+      auto it = std::find_if(want.begin(), want.end(), [&](const IntVertex& y) {
+        for (int c = 0; c < 3; ++c)
+          if (x.x[c] * Q(static_cast<long long>(y.den)) != Q(static_cast<long long>(y.num[c]))) return false;
+        return true;
+      });
+      ASSERT_NE(it, want.end()) << "cut " << H.size() - 1 << ": a vertex of the clip is not a vertex of the cell";
+      std::vector<int> got(x.tight.begin(), x.tight.end());
+      EXPECT_EQ(got, it->tight) << "cut " << H.size() - 1 << ": tight set";
+    }
+  };
+  // the cone with apex (0, 0, 2): 12 planes a·x + b·y + 5z ≤ 10, (a, b) the integer points of the
+  // circle of radius 5 (in convex position, so each is a facet and all are tight at the apex)
+  for (auto [a, b] : std::vector<std::pair<int, int>>{{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0},
+                                                      {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}})
+    cut({{a, b, 5}, 10}, true);
+  // random planes n·x ≤ ⌊3|n|⌋ (about 3 from the centre) below the apex's height until the cell
+  // has more than 70 vertices; they leave the apex strictly inside
+  std::uniform_int_distribution<int> coef(-6, 6);
+  auto random_plane = [&](double dist) {
+    IntPlane h{{0, 0, 0}, 0};
+    while (h.a[0] == 0 && h.a[1] == 0 && h.a[2] == 0)
+      for (auto& c : h.a) c = coef(rng);
+    h.a[2] = -std::abs(h.a[2]);  // facing down: keeps the apex inside
+    const double len = std::sqrt(double(h.a[0] * h.a[0] + h.a[1] * h.a[1] + h.a[2] * h.a[2]));
+    h.b = static_cast<std::int64_t>(std::floor(dist * len));
+    return h;
+  };
+  for (int guard = 0; P.v.size() <= 70 && guard < 200; ++guard) cut(random_plane(3), false);
+  ASSERT_GT(P.v.size(), 70u) << "the cell did not grow past 64 vertices";
+  cut({{0, 0, -1}, 4}, true);  // a duplicate of a box plane: a second constraint tight on a face
+  // checked cuts on the big cell: random ones (the apex, with 12 tight, inside), one through the
+  // apex (apex tight, not cut), then ones cutting the apex off (it is outside with 12 tight)
+  for (int i = 0; i < 10; ++i) {
+    ++apex_inside;
+    cut(random_plane(2.8), true);
+  }
+  cut({{1, 1, 0}, 0}, true);  // x + y ≤ 0 passes through the apex
+  for (auto [a, b, c, d] : std::vector<std::array<int, 4>>{{0, 0, 1, 1}, {1, 0, 2, 3}, {0, 0, 1, 0}}) {
+    ++apex_cut_off;
+    cut({{a, b, c}, d}, true);
+  }
+  std::printf("%d cuts checked, %d of them on cells with > 64 vertices and a vertex with > 8 tight; most tight %zu\n",
+              checked, checked_big, most_tight);
+  EXPECT_GE(checked_big, 8) << "the big degenerate cell was not cut often enough to test the bit rows";
+  EXPECT_GT(most_tight, 8u);
+  (void)apex_inside;
+  (void)apex_cut_off;
+}

@@ -173,7 +173,7 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
     Pt u;
   };
   std::vector<Cand> cand;
-  std::vector<std::pair<K, double>> late;  // squares popped after NN was fixed, with their heap keys
+  std::vector<std::pair<Leaf*, double>> late;  // squares popped after NN was fixed, with their heap keys
   double best = std::numeric_limits<double>::infinity();  // upper bound on NN²
   bool nn_fixed = false;
   double limit = std::numeric_limits<double>::infinity();
@@ -262,8 +262,8 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
     if (nn_fixed && key > limit) break;
     heap.pop();
     if (nn_fixed && !(s == start) && !meets(s, key)) continue;
-    if (nn_fixed) late.push_back({s, key});
-    else res.reads.push_back(s);
+    if (nn_fixed) late.push_back({&L, key});
+    else res.read_leaves.push_back(&L);
     std::size_t before = cand.size();
     {
       here.clear();
@@ -288,9 +288,11 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
   // The squares read are those of the NN phase and those meeting the certificate region of the
   // FINAL cell: a function of the data, not of the order in which squares were popped (squares
   // popped earlier against a larger region hold only vertices that cannot affect the result).
-  for (const auto& [s, key] : late)
-    if (meets(s, key)) res.reads.push_back(s);
-  std::sort(res.reads.begin(), res.reads.end());
+  for (const auto& [l, key] : late)
+    if (meets(l->key, key)) res.read_leaves.push_back(l);
+  std::sort(res.read_leaves.begin(), res.read_leaves.end(), [](const Leaf* a, const Leaf* b) { return a->key < b->key; });
+  res.reads.reserve(res.read_leaves.size());
+  for (const Leaf* l : res.read_leaves) res.reads.push_back(l->key);
   // exact decision: u ∈ CV iff the face of C on the bisector of v, u has a point within β·NN
   NT r2 = sq<NT>(params.beta) * dist2(rel(res.nn), vq);
   const double r2_hi = exact::enclose(r2).hi();

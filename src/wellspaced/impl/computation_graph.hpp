@@ -8,10 +8,10 @@ namespace kmr::wellspaced {
 
 template <std::size_t D>
 auto WellSpacedSet<D>::Impl::mark_readers(const K& s, const Time& t) -> void {
-  auto it = readers.find(s);
-  if (it == readers.end()) return;
-  for (const OpKey& k : it->second)
-    if (k.t > t) pending.insert(k);
+  auto it = leaves.find(s);
+  if (it == leaves.end()) return;  // not a leaf: nothing reads it (Leaf::readers)
+  for (const OpRec* r : it->second.readers)
+    if (r->first.t > t) pending.insert(r->first);
 }
 
 template <std::size_t D>
@@ -68,11 +68,12 @@ auto WellSpacedSet<D>::Impl::check_internal_indexes() const -> std::string {
   auto name = [](const OpKey& k) { return "(" + fmt_point<D>(k.v) + " @" + k.t.str() + ")"; };
   if (!pending.empty()) return std::to_string(pending.size()) + " operations pending";
   std::size_t reads = 0;
-  for (const auto& [k, op] : ops) {
+  for (const auto& rec : ops) {
+    const auto& [k, op] = rec;
     for (const K& s : op.reads) {
       ++reads;
-      auto it = readers.find(s);
-      if (it == readers.end() || std::count(it->second.begin(), it->second.end(), k) != 1)
+      auto it = leaves.find(s);
+      if (it == leaves.end() || std::count(it->second.readers.begin(), it->second.readers.end(), &rec) != 1)
         return "square " + s.str() + " read by " + name(k) + " does not list it once as a reader";
     }
     for (const OpKey& t : op.targets) {
@@ -88,12 +89,12 @@ auto WellSpacedSet<D>::Impl::check_internal_indexes() const -> std::string {
     }
   }
   std::size_t listed = 0;
-  for (const auto& [s, rs] : readers) {
-    listed += rs.size();
-    for (const OpKey& k : rs) {
-      auto it = ops.find(k);
-      if (it == ops.end() || std::count(it->second.reads.begin(), it->second.reads.end(), s) != 1)
-        return name(k) + " is a reader of " + s.str() + " without reading it";
+  for (const auto& [s, L] : leaves) {
+    listed += L.readers.size();
+    for (const OpRec* r : L.readers) {
+      auto it = ops.find(r->first);
+      if (it == ops.end() || &*it != r || std::count(it->second.reads.begin(), it->second.reads.end(), s) != 1)
+        return name(r->first) + " is a reader of " + s.str() + " without reading it";
     }
   }
   if (listed != reads) return "reader lists hold " + std::to_string(listed) + " entries for " + std::to_string(reads) + " reads";

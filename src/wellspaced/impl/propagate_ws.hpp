@@ -15,9 +15,9 @@
 //       at t — queues the readers of that square later than t (MarkReaders).
 //  (I4) Existence. An operation exists iff it has the input edge v_(0) or a source; when its last
 //       source drops it, it is queued and, when popped, undone and deleted (obsolete, Ω⊖).
-//  (I5) Indexes (check_internal_indexes): readers[s] is exactly the executed operations that read
-//       s; sources are the inverse of targets; each vertex is in the leaf locate() gives; nothing
-//       is pending between updates.
+//  (I5) Indexes (check_internal_indexes): the readers of leaf s are exactly the executed
+//       operations that read s, and only leaves are read; sources are the inverse of targets;
+//       each vertex is in the leaf locate() gives; nothing is pending between updates.
 // Internal: included only by well_spaced_set.cpp (after impl/state.hpp).
 #include "wellspaced/impl/state.hpp"
 
@@ -25,15 +25,15 @@ namespace kmr::wellspaced {
 
 template <std::size_t D>
 auto WellSpacedSet<D>::Impl::undo(const OpKey& k, Op& op) -> void {
+  const OpRec* self = &*ops.find(k);
   for (const K& s : op.reads) {
-    auto it = readers.find(s);
-    if (it != readers.end()) {
-      auto& rs = it->second;
-      auto at = std::find(rs.begin(), rs.end(), k);
+    auto it = leaves.find(s);  // gone: s stopped being a leaf, and its reader list went with it
+    if (it != leaves.end()) {
+      auto& rs = it->second.readers;
+      auto at = std::find(rs.begin(), rs.end(), self);
       KMR_CHECK(at != rs.end(), "undo: operation missing from its square's readers");
       *at = rs.back();
       rs.pop_back();
-      if (rs.empty()) readers.erase(it);
     }
   }
   for (const OpKey& t : op.targets) {
@@ -67,7 +67,7 @@ auto WellSpacedSet<D>::Impl::process(const OpKey& k) -> void {
     if (k.t.type == 0) dispatch(k, op);
     else fill(k, op);
     op.executed = true;
-    for (const K& s : op.reads) readers[s].push_back(k);
+    for (Leaf* L : read_leaves) L->readers.push_back(&*it);
   }
   // targets no longer enqueued by k
   for (const OpKey& t : old_targets)

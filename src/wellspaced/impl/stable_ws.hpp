@@ -8,7 +8,8 @@ namespace kmr::wellspaced {
 template <std::size_t D>
 auto WellSpacedSet<D>::Impl::dispatch(const OpKey& k, Op& op) -> void {
   CVResult cv = clipped_voronoi_neighbors(k.v, k.t);
-  op.reads = cv.reads;
+  op.reads = std::move(cv.reads);
+  read_leaves = std::move(cv.read_leaves);
   enqueue(k.v, 1, rank_between(k.v, cv.nn), k, op);
   for (const Pt& w : cv.cv) enqueue(w, 1, rank_between(k.v, w), k, op);
   stats.dispatches++;
@@ -284,7 +285,8 @@ auto WellSpacedSet<D>::Impl::fill_tier(const Pt& v, const CVResult& cv) -> std::
 template <std::size_t D>
 auto WellSpacedSet<D>::Impl::fill(const OpKey& k, Op& op) -> void {
   CVResult cv = clipped_voronoi_neighbors(k.v, k.t);
-  op.reads = cv.reads;
+  op.reads = std::move(cv.reads);
+  read_leaves = std::move(cv.read_leaves);
   std::vector<Pt> ws;
   try {
     if (params.exact_only) throw Uncertain();

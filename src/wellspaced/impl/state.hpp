@@ -94,6 +94,9 @@ struct WellSpacedSet<D>::Impl {
     std::vector<OpKey> targets;     // operations enqueued (edges op → op)
     std::vector<Pt> steiners;       // Steiner vertices inserted (edges op → square of w)
   };
+  // An operation's record in `ops`: std::map nodes do not move, so a reader list holds pointers to
+  // them (an operation is erased only after undo took it off its squares' lists; issue 11 §4, ws12)
+  using OpRec = std::pair<const OpKey, Op>;
   struct Vtx {
     bool steiner = false;
     Time created;
@@ -109,6 +112,11 @@ struct WellSpacedSet<D>::Impl {
     std::vector<Leaf*> adjacent;
     bool adjacent_ok = false;
     std::uint64_t stamp = 0;  // the last scan that reached this square
+    // the executed operations that read this square (MarkReaders' edges s → op), unordered. Kept
+    // in the leaf record (ws12: was a hash map keyed by square, 8 % of a 2D run at n = 10^4): a
+    // square is read only while it is a leaf, and when it stops being one its readers are all
+    // queued (MarkReaders(s, 0)) and undone in the same update, so the list may go with the record.
+    std::vector<OpRec*> readers;
   };
 
   Params params;
@@ -121,7 +129,6 @@ struct WellSpacedSet<D>::Impl {
   std::uint64_t scan_stamp = 0;  // numbers the clipped-Voronoi scans (Leaf::stamp)
   std::map<OpKey, Op> ops;
   std::map<Pt, std::set<Time>> ops_by_vertex;
-  std::unordered_map<K, std::vector<OpKey>, KeyHash<D>> readers;  // square → its readers (unordered)
   std::set<OpKey> pending;
   std::map<int, Q> rho_pow2;  // ρ^{2r}
   std::map<int, IntervalNT> rho_pow2_i;  // enclosures of ρ^{2r}
@@ -166,6 +173,7 @@ struct WellSpacedSet<D>::Impl {
   // results do not depend on which tier answered. Doubles only order work and prune it rigorously.
   struct CVResult {
     std::vector<K> reads;  // squares read, sorted
+    std::vector<Leaf*> read_leaves;  // their leaf records, in the same order
     Pt nn{};               // a nearest visible vertex (the lexicographically least on ties)
     std::vector<Pt> cv;    // β-clipped Voronoi neighbours, sorted
   };
@@ -196,6 +204,7 @@ struct WellSpacedSet<D>::Impl {
 
   // ---------- StableWS: Dispatch and Fill (Fig. 3.4): impl/stable_ws.hpp ----------
   void construct(const std::vector<Point<D>>& input);
+  std::vector<Leaf*> read_leaves;  // the squares the last dispatch/fill read (process lists it as their reader)
   void dispatch(const OpKey& k, Op& op);
   template <class NT>
   Pt pick(const std::array<NT, D>& vq, const Pt& v, const Pt& nn, const NT& nn2, const Polytope<D, NT>& P);
