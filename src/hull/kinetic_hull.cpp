@@ -322,6 +322,7 @@ void KineticHull::refresh_machine_points(int x) {
 }
 
 KineticHull::~KineticHull() {
+  if (sac::BigStack* s = sac::BigStack::kept_of_thread()) s->trim(kStackKeep);
   if (!sim_) return;
   for (kinetic::CertificateId id = 0; id < by_sim_.size(); ++id)  // increasing id order, not the table's
     if (by_sim_[id]) sim_->remove(id);
@@ -330,7 +331,7 @@ KineticHull::~KineticHull() {
 // run / incrementalHull / app insertVertex: the initial tetrahedron (its orientation a
 // certificate), then every other point in priority order.
 void KineticHull::run() {
-  stack_.run([this] {
+  on_stack([this] {
     rt_.run([this] {
       const int a = simplex_[0], b = simplex_[1], c = simplex_[2], d = simplex_[3];  // (no captured bindings: clang 14)
       Mod<Roots>* roots = rt_.alloc<Roots>(kRoots);
@@ -358,7 +359,7 @@ void KineticHull::update(const std::vector<kinetic::CertificateId>& batch) {
 
 void KineticHull::propagate() {
   if (sim_) t_ = sim_->now();
-  stack_.run([this] { rt_.propagate(); });
+  on_stack([this] { rt_.propagate(); });
   ++counters_.propagations;
 }
 
