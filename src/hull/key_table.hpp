@@ -68,6 +68,12 @@ class KeyTable {
     return slots_[probe.slot].value;
   }
   bool contains(const K& k) const { return find(k) != nullptr; }
+  // Room for n entries without growth (the capacity only grows; no entry moves afterwards until
+  // the table holds more than n).
+  void reserve(std::size_t n) {
+    while (2 * n > slots_.size()) grow();
+  }
+  std::size_t capacity() const { return slots_.size() / 2; }  // entries that fit without growth
 
   V& insert(const K& k, V v) {
     if (2 * (size_ + 1) > slots_.size()) grow();

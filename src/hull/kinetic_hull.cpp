@@ -21,6 +21,7 @@
 #include "hull/kinetic_hull.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "exact/error.hpp"
 #include "poly/failure_filter.hpp"
@@ -298,6 +299,15 @@ void KineticHull::start() {
   simplex_ = initial_simplex_of(pts_, live_order);
   centre_sum_ = trajectory_sum(pts_[simplex_[0]], pts_[simplex_[1]], pts_[simplex_[2]], pts_[simplex_[3]]);
   refresh_machine_points();
+  // Room for the initial run's certificates up front (about 5 n log2 n, Fig. 2.8): no table
+  // growth or record moves during the run (issue 9; no decision depends on capacities).
+  const double n = static_cast<double>(pts_.size());
+  const auto expected = static_cast<std::size_t>(6 * n * std::log2(std::max(2.0, n)));
+  certs_.reserve(expected);
+  if (sim_) {
+    by_sim_.reserve(by_sim_.size() + expected);
+    sim_->reserve(expected);
+  }
   if (present_box_.empty())
     for (std::size_t x = 0; x < pts_.size(); ++x)
       present_box_.push_back(rt_.input<bool>(sac::Label("hull.present"), x, present_[x]));
@@ -322,6 +332,7 @@ void KineticHull::refresh_machine_points(int x) {
 }
 
 KineticHull::~KineticHull() {
+  if (sac::BigStack* s = sac::BigStack::kept_of_thread()) s->trim(kStackKeep);
   if (!sim_) return;
   for (kinetic::CertificateId id = 0; id < by_sim_.size(); ++id)  // increasing id order, not the table's
     if (by_sim_[id]) sim_->remove(id);
@@ -330,7 +341,7 @@ KineticHull::~KineticHull() {
 // run / incrementalHull / app insertVertex: the initial tetrahedron (its orientation a
 // certificate), then every other point in priority order.
 void KineticHull::run() {
-  stack_.run([this] {
+  on_stack([this] {
     rt_.run([this] {
       const int a = simplex_[0], b = simplex_[1], c = simplex_[2], d = simplex_[3];  // (no captured bindings: clang 14)
       Mod<Roots>* roots = rt_.alloc<Roots>(kRoots);
@@ -358,7 +369,7 @@ void KineticHull::update(const std::vector<kinetic::CertificateId>& batch) {
 
 void KineticHull::propagate() {
   if (sim_) t_ = sim_->now();
-  stack_.run([this] { rt_.propagate(); });
+  on_stack([this] { rt_.propagate(); });
   ++counters_.propagations;
 }
 

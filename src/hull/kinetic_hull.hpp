@@ -179,9 +179,14 @@ class KineticHull {
   std::optional<MachinePoint> machine_centre_;        // of centre_sum_, when all four have one
   std::optional<std::pair<std::int64_t, int>> t_lattice_;  // t_ = k·2^-b with |k| < 2^53, 0 ≤ b ≤ 62
   sac::Runtime rt_;
-  // Runs and propagations nest a continuation per insertion: they run on one kept 1 GiB (virtual)
-  // stack, mapped once and warm after the initial run (issue 9; spec/hull.md "Kinetic performance").
-  sac::BigStack stack_{std::size_t{1} << 30};
+  // Runs and propagations nest a continuation per insertion: they run on the thread's kept 1 GiB
+  // (virtual) stack, mapped once per thread and warm after the first run (issue 9; spec/hull.md
+  // "Kinetic performance"); a hull that ends returns its pages below the top kStackKeep bytes.
+  static constexpr std::size_t kStackBytes = std::size_t{1} << 30, kStackKeep = std::size_t{32} << 20;
+  template <class F>
+  static void on_stack(F&& f) {
+    sac::BigStack::of_thread(kStackBytes).run(f);
+  }
   // Lookup-only flat tables (key_table.hpp; iteration order never reaches a result: what is
   // listed is sorted first).
   struct KeyHash {  // two ints per 64-bit word, a multiply per word, one finalizer (sac::mix)

@@ -40,6 +40,11 @@ MotionSimulator::MotionSimulator(int lattice_bits, Dyadic horizon, SimulatorOpti
   if (small_lattice_) last_k_ = static_cast<std::int64_t>(last_k_big_);
 }
 
+void MotionSimulator::reserve(std::size_t more) {
+  slot_of_id_.reserve(slot_of_id_.size() + more);
+  if (free_slots_.size() < more) records_.reserve(records_.size() + (more - free_slots_.size()));
+}
+
 MotionSimulator::Record& MotionSimulator::record(CertificateId id) {
   KMR_CHECK(id < slot_of_id_.size() && slot_of_id_[id] != kNoRecord, "unknown certificate id");
   return records_[slot_of_id_[id]];

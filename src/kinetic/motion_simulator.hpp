@@ -112,6 +112,8 @@ class MotionSimulator {
   // The certificate c0 + c1·t, without building a Polynomial (the fast path when it applies).
   CertificateId add_linear(std::int64_t c0, std::int64_t c1);
   void remove(CertificateId id);
+  // Room for `more` further certificates (no record moves while they are added); changes nothing else.
+  void reserve(std::size_t more);
   // A view of the certificate; the reference is valid until the next call on the simulator.
   const Certificate& certificate(CertificateId id) const;
   int outcome(CertificateId id) const;

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "exact/error.hpp"
@@ -55,6 +56,40 @@ BigStack::~BigStack() {
   delete static_cast<Contexts*>(contexts_);
   munmap(base_, mapped_);
 }
+
+void BigStack::trim(std::size_t keep) {
+  if (running_) return;  // (its pages are in use)
+  const std::size_t page = page_size();
+  keep = (keep + page - 1) / page * page;
+  if (keep >= usable_) return;
+  madvise(base_ + page, usable_ - keep, MADV_DONTNEED);  // (advice: a failure changes nothing)
+}
+
+namespace {
+// The thread's kept stack: a plain pointer (readable at any time) owned by a thread-local holder
+// that unmaps it when the thread exits.
+thread_local BigStack* kept = nullptr;
+struct KeptHolder {
+  bool armed = false;
+  ~KeptHolder() {
+    delete kept;
+    kept = nullptr;
+  }
+};
+thread_local KeptHolder kept_holder;
+}  // namespace
+
+BigStack& BigStack::of_thread(std::size_t bytes) {
+  if (!kept || (kept->usable_ < bytes && !kept->running_)) {
+    auto fresh = std::make_unique<BigStack>(bytes);
+    delete kept;
+    kept = fresh.release();
+    kept_holder.armed = true;  // (odr-uses the holder, so its destructor runs at thread exit)
+  }
+  return *kept;
+}
+
+BigStack* BigStack::kept_of_thread() { return kept; }
 
 bool BigStack::contains(const void* p) const {
   auto a = reinterpret_cast<std::uintptr_t>(p), lo = reinterpret_cast<std::uintptr_t>(base_ + (mapped_ - usable_));

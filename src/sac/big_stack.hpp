@@ -16,6 +16,8 @@
 //    stays usable. Nothing is left on the big stack between runs (each run starts afresh).
 //  * Every run() of one BigStack uses the same mapping (its pages stay mapped until destruction).
 //  * run() called from inside f (already on this stack) calls f directly.
+//  * of_thread(bytes) returns the same object on every call from one thread while it is large
+//    enough; other threads get their own.
 //  * The constructor throws ContractError for a size below PTHREAD_STACK_MIN or one that cannot be
 //    mapped; destruction unmaps (while no run is in progress).
 // A BigStack belongs to one thread at a time (no locking), and f must return or throw: leaving it
@@ -39,6 +41,17 @@ class BigStack {
   void run(const std::function<void()>& f);
   // Whether p points into the usable part of the mapping (for tests: where f's locals live).
   bool contains(const void* p) const;
+  // Returns the pages below the top `keep` bytes to the system (madvise MADV_DONTNEED; they read
+  // as zero and fault in again if touched); does nothing during a run.
+  void trim(std::size_t keep);
+
+  // The calling thread's kept stack of at least `bytes`, mapped at the first call (or mapped anew,
+  // larger, when idle and too small) and kept until the thread exits: owners that come and go on
+  // one thread (the kinetic hulls of an audit loop) share one warm mapping instead of faulting in
+  // a fresh stack each (issue 9, spec/sac.md "Big stacks").
+  static BigStack& of_thread(std::size_t bytes);
+  static BigStack* kept_of_thread();  // the thread's kept stack, if of_thread mapped one
+  std::size_t usable() const { return usable_; }
 
  private:
   static void enter(unsigned hi, unsigned lo);

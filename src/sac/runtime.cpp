@@ -11,12 +11,58 @@
 namespace kmr::sac {
 
 // ---- memory: size-classed free lists (8-byte classes) over chunks that grow geometrically -------
+namespace {
+// Chunks of pools that ended, kept (up to kCacheBytes) for the next pool of the same thread: a
+// runtime built and dropped again and again (the audit's kinetic hulls, best of 5) takes warm pages
+// instead of faulting in fresh ones (chunks of 128 KiB and more come from mmap and go back to the
+// system when freed; issue 9, spec/sac.md "Warm memory"). Plain thread-locals, readable at any
+// time; the holder frees the kept chunks when the thread exits.
+constexpr std::size_t kCacheBytes = std::size_t{64} << 20;
+struct KeptChunks {
+  struct Chunk {
+    void* p;
+    std::size_t bytes;
+  };
+  std::vector<Chunk> chunks;
+  std::size_t bytes = 0;
+  KeptChunks();
+  ~KeptChunks();
+};
+thread_local bool kept_alive = false;  // trivially destructible: readable after the holder ended
+thread_local KeptChunks kept;
+KeptChunks::KeptChunks() { kept_alive = true; }
+KeptChunks::~KeptChunks() {
+  kept_alive = false;
+  for (const Chunk& c : chunks) std::free(c.p);
+}
+
+void* take_chunk(std::size_t bytes) {
+  KeptChunks& k = kept;  // (constructs this thread's holder at its first use)
+  for (std::size_t i = k.chunks.size(); i-- > 0;)
+    if (k.chunks[i].bytes == bytes) {
+      void* p = k.chunks[i].p;
+      k.chunks.erase(k.chunks.begin() + static_cast<std::ptrdiff_t>(i));
+      k.bytes -= bytes;
+      return p;
+    }
+  return std::aligned_alloc(4096, bytes);
+}
+void give_chunk(void* p, std::size_t bytes) {
+  if (kept_alive && kept.bytes + bytes <= kCacheBytes) {
+    kept.chunks.push_back({p, bytes});
+    kept.bytes += bytes;
+  } else {
+    std::free(p);
+  }
+}
+}  // namespace
+
 void* NodePool::refill(std::size_t bytes) {
   std::size_t size = next_chunk_;
   if (next_chunk_ < kMaxChunk) next_chunk_ *= 2;
   // (Transparent huge pages (MADV_HUGEPAGE) and MAP_POPULATE were measured on map at 10^6: neither
   // cut the system time, huge pages doubled it.)
-  void* c = std::aligned_alloc(4096, size);
+  void* c = take_chunk(size);
   if (!c) throw std::bad_alloc();
   chunks_.push_back(c);
   // The rest of the old chunk goes to the free lists, so no byte is lost.
@@ -33,7 +79,11 @@ void* NodePool::refill(std::size_t bytes) {
 }
 
 NodePool::~NodePool() {
-  for (void* c : chunks_) std::free(c);
+  std::size_t size = std::size_t{64} << 10;  // the chunks' sizes, as refill grew them
+  for (void* c : chunks_) {
+    give_chunk(c, size);
+    if (size < kMaxChunk) size *= 2;
+  }
 }
 
 Runtime::Runtime() : buckets_(1024, nullptr) {}

@@ -108,5 +108,26 @@ TEST(KeyTable, InsertOfPresentKeyRefusedAndClearEmpties) {
   EXPECT_EQ(*t.find(Key{0, 1, 2, 3, 4}), 7);
 }
 
+// reserve(n) (issue 9: the kinetic hull reserves its initial run's certificates): the entries present
+// stay, and n entries then fit without growth, so a value's address taken after the reserve holds
+// while the table fills up to n (growth would move it). Hand-derived: 16 slots hold 8 entries.
+TEST(KeyTable, ReserveKeepsEntriesAndMakesRoomWithoutGrowth) {
+  KeyTable<Key, int, GoodHash> t;
+  EXPECT_EQ(t.capacity(), 0u);
+  t.insert(Key{0, 0, 0, 0, 0}, 10);
+  EXPECT_EQ(t.capacity(), 8u);
+  t.reserve(1000);
+  EXPECT_EQ(t.capacity(), 1024u);
+  const int* first = t.find(Key{0, 0, 0, 0, 0});
+  ASSERT_NE(first, nullptr);
+  EXPECT_EQ(*first, 10);
+  for (int i = 1; i < 1000; ++i) t.insert(Key{1, i, 0, 0, 0}, i);
+  EXPECT_EQ(t.capacity(), 1024u);
+  EXPECT_EQ(t.find(Key{0, 0, 0, 0, 0}), first);  // never moved
+  for (int i = 1; i < 1000; ++i) ASSERT_EQ(*t.find(Key{1, i, 0, 0, 0}), i);
+  t.reserve(10);  // never shrinks
+  EXPECT_EQ(t.capacity(), 1024u);
+}
+
 }  // namespace
 }  // namespace kmr::hull

@@ -175,6 +175,41 @@ TEST(SacBigStack, DestructionWhileIdleUnmapsTheStack) {
   EXPECT_EQ(errno, ENOMEM);  // not mapped any more
 }
 
+// of_thread (issue 9, spec/sac.md "Warm memory"): one kept stack per thread, reused by every caller
+// on that thread while large enough; trim(keep) gives back the pages below the top `keep` bytes
+// (mincore: not resident) and keeps the top's (resident), and the stack stays usable.
+TEST(SacBigStack, OfThreadIsOneKeptStackPerThreadAndTrimGivesBackItsDeepPages) {
+  BigStack& a = BigStack::of_thread(std::size_t{64} << 20);
+  EXPECT_EQ(&BigStack::of_thread(std::size_t{32} << 20), &a);  // large enough: the same object
+  EXPECT_EQ(BigStack::kept_of_thread(), &a);
+  EXPECT_GE(a.usable(), std::size_t{64} << 20);
+  BigStack* other = nullptr;
+  std::thread([&] { other = &BigStack::of_thread(std::size_t{16} << 20); }).join();
+  EXPECT_NE(other, &a);  // another thread's own (unmapped when that thread ended)
+  Deep deep;
+  std::uintptr_t top = 0;
+  a.run([&] {
+    top = frame();
+    deep.sum(4096);  // ≥ 16 MiB of stack touched
+  });
+  const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+  auto resident = [&](std::uintptr_t p) {
+    unsigned char v = 0;
+    EXPECT_EQ(mincore(reinterpret_cast<void*>(p / page * page), page, &v), 0);
+    return (v & 1) != 0;
+  };
+  const std::uintptr_t deep_page = deep.lowest + 2 * page;  // touched by the deepest frames
+  EXPECT_TRUE(resident(deep_page));
+  EXPECT_TRUE(resident(top));
+  a.trim(std::size_t{4} << 20);
+  EXPECT_FALSE(resident(deep_page)) << "pages below the kept top should be given back";
+  EXPECT_TRUE(resident(top)) << "the top 4 MiB stay";
+  EXPECT_EQ(&BigStack::of_thread(std::size_t{1} << 20), &a);
+  std::uint64_t again = 0;
+  a.run([&] { again = deep.sum(2048); });  // usable after a trim (the pages fault in again)
+  EXPECT_EQ(again, 2048u * 2049u / 2);
+}
+
 TEST(SacBigStack, RefusedSizesAndTheOneShotWithStack) {
   bool ran = false;
   std::string small = error_of([&] { with_stack(PTHREAD_STACK_MIN - 1, [&] { ran = true; }); });
