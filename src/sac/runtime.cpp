@@ -64,7 +64,7 @@ void* NodePool::refill(std::size_t bytes) {
   // cut the system time, huge pages doubled it.)
   void* c = take_chunk(size);
   if (!c) throw std::bad_alloc();
-  chunks_.push_back(c);
+  chunks_.push_back({c, size});
   // The rest of the old chunk goes to the free lists, so no byte is lost.
   for (std::size_t k = kClasses - 1; k > 0 && left_ >= 8; --k)
     while (left_ >= k * 8) {
@@ -79,11 +79,7 @@ void* NodePool::refill(std::size_t bytes) {
 }
 
 NodePool::~NodePool() {
-  std::size_t size = std::size_t{64} << 10;  // the chunks' sizes, as refill grew them
-  for (void* c : chunks_) {
-    give_chunk(c, size);
-    if (size < kMaxChunk) size *= 2;
-  }
+  for (const auto& [c, bytes] : chunks_) give_chunk(c, bytes);
 }
 
 Runtime::Runtime() : buckets_(1024, nullptr) {}

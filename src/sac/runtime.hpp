@@ -437,7 +437,7 @@ class NodePool {
   char* cur_ = nullptr;
   std::size_t left_ = 0;
   std::size_t next_chunk_ = std::size_t{64} << 10;
-  std::vector<void*> chunks_;
+  std::vector<std::pair<void*, std::size_t>> chunks_;  // (start, bytes): kept chunks are matched by size
 };
 
 // ---- the runtime ------------------------------------------------------------------------------
