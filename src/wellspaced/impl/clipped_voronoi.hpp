@@ -166,7 +166,7 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
   const K start = vtx.at(v).leaf;
   Leaf& start_leaf = leaves.at(start);
   heap.push({0.0, &start_leaf});
-  stamps[start_leaf.slot] = stamp;
+  start_leaf.stamp = stamp;
   struct Cand {
     double approx;   // |uv|² rounded (the clipping order)
     IntervalNT d;    // |uv|² enclosed
@@ -277,11 +277,10 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
       }
     }
     if (nn_fixed && cand.size() > before) clip_from(before);
-    const std::vector<Leaf*>& adj = adjacent_leaves(L);
-    for (std::size_t i = 0; i < adj.size(); ++i)
-      if (std::uint64_t& st = stamps[L.adjacent_slot[i]]; st != stamp) {
-        st = stamp;
-        heap.push({box_dist2_lower(v, vabs, adj[i]->key), adj[i]});
+    for (Leaf* n : adjacent_leaves(L))
+      if (n->stamp != stamp) {
+        n->stamp = stamp;
+        heap.push({box_dist2_lower(v, vabs, n->key), n});
       }
   }
   KMR_CHECK(!cand.empty(), "clipped Voronoi scan found no vertex");

@@ -62,8 +62,7 @@ auto WellSpacedSet<D>::Impl::input_dispatch_time(const Pt& v) -> Time {
 // The indexes the canonical graph does not show (issue 11 §2), checked after every command of
 // the Lemma 3.4.2 property: readers are exactly the inverse of the reads, sources exactly the
 // inverse of the targets, every vertex in the leaf locate() gives (and listed there), leaves are
-// the tree's leaves, nothing pending, valid adjacency caches equal the tree's adjacency, each
-// leaf has its own stamp slot.
+// the tree's leaves, nothing pending, valid adjacency caches equal the tree's adjacency.
 template <std::size_t D>
 auto WellSpacedSet<D>::Impl::check_internal_indexes() const -> std::string {
   auto name = [](const OpKey& k) { return "(" + fmt_point<D>(k.v) + " @" + k.t.str() + ")"; };
@@ -101,11 +100,6 @@ auto WellSpacedSet<D>::Impl::check_internal_indexes() const -> std::string {
   if (listed != reads) return "reader lists hold " + std::to_string(listed) + " entries for " + std::to_string(reads) + " reads";
   auto tl = tree.leaves();
   if (tl.size() != leaves.size()) return "leaf store holds " + std::to_string(leaves.size()) + " squares, the tree " + std::to_string(tl.size());
-  std::vector<bool> slot_used(stamps.size(), false);  // each leaf its own entry of `stamps`
-  for (const auto& [s, L] : leaves) {
-    if (L.slot >= stamps.size() || slot_used[L.slot]) return "leaf " + s.str() + " shares or lacks a stamp slot";
-    slot_used[L.slot] = true;
-  }
   std::size_t inside = 0;
   for (const K& l : tl) {
     auto it = leaves.find(l);
@@ -119,8 +113,7 @@ auto WellSpacedSet<D>::Impl::check_internal_indexes() const -> std::string {
       auto want = tree.adjacent_leaves(l);
       if (want.size() != L.adjacent.size()) return "stale adjacency cache at " + l.str();
       for (std::size_t i = 0; i < want.size(); ++i)
-        if (!(L.adjacent[i]->key == want[i]) || L.adjacent_slot[i] != L.adjacent[i]->slot)
-          return "stale adjacency cache at " + l.str();
+        if (!(L.adjacent[i]->key == want[i])) return "stale adjacency cache at " + l.str();
     }
   }
   if (inside != vtx.size()) return std::to_string(vtx.size()) + " vertices, " + std::to_string(inside) + " listed in leaves";

@@ -144,7 +144,6 @@ auto WellSpacedSet<D>::Impl::apply_tree_change(const typename Quadtree<D>::Chang
     auto it = leaves.find(s);
     if (it == leaves.end()) continue;
     for (const Pt& x : it->second.verts) moved.push_back(x);
-    free_slots.push_back(it->second.slot);
     leaves.erase(it);
   }
   for (const K& s : ch.fresh) leaf_of(s);

@@ -108,12 +108,10 @@ struct WellSpacedSet<D>::Impl {
     std::vector<Time> born;  // born[i] = creation time of verts[i] (saves a vtx lookup per scan)
     K key;
     // cache of tree.adjacent_leaves(key), valid if adjacent_ok; the pointers stay valid while it is
-    // (unordered_map nodes do not move; a vanished leaf's neighbours are all invalidated), with the
-    // neighbours' slots in `stamps` alongside (adjacent_slot[i] = adjacent[i]->slot)
+    // (unordered_map nodes do not move; a vanished leaf's neighbours are all invalidated)
     std::vector<Leaf*> adjacent;
-    std::vector<std::uint32_t> adjacent_slot;
     bool adjacent_ok = false;
-    std::uint32_t slot = 0;  // this square's entry in Impl::stamps, unique among the leaves
+    std::uint64_t stamp = 0;  // the last scan that reached this square
     // the executed operations that read this square (MarkReaders' edges s → op), unordered. Kept
     // in the leaf record (ws12: was a hash map keyed by square, 8 % of a 2D run at n = 10^4): a
     // square is read only while it is a leaf, and when it stops being one its readers are all
@@ -128,12 +126,7 @@ struct WellSpacedSet<D>::Impl {
   Quadtree<D> tree;
   std::map<Pt, Vtx> vtx;
   std::unordered_map<K, Leaf, KeyHash<D>> leaves;
-  std::uint64_t scan_stamp = 0;  // numbers the clipped-Voronoi scans
-  // stamps[L.slot] = the last scan that reached leaf L. A flat array, not a field of the leaf
-  // record: a 4D scan tests ≈ 60 neighbours per square read, nearly all already reached, and a
-  // record per test was a cache miss each (issue 11 §5, ws13). Slots of erased leaves are reused.
-  std::vector<std::uint64_t> stamps;
-  std::vector<std::uint32_t> free_slots;
+  std::uint64_t scan_stamp = 0;  // numbers the clipped-Voronoi scans (Leaf::stamp)
   std::map<OpKey, Op> ops;
   std::map<Pt, std::set<Time>> ops_by_vertex;
   std::set<OpKey> pending;

@@ -16,17 +16,7 @@ auto WellSpacedSet<D>::Impl::leaf_input(const K& leaf) const -> const Point<D>* 
 template <std::size_t D>
 auto WellSpacedSet<D>::Impl::leaf_of(const K& s) -> Leaf& {
   auto [it, fresh] = leaves.try_emplace(s);
-  if (fresh) {
-    it->second.key = s;
-    if (free_slots.empty()) {
-      it->second.slot = static_cast<std::uint32_t>(stamps.size());
-      stamps.push_back(0);
-    } else {
-      it->second.slot = free_slots.back();
-      free_slots.pop_back();
-      stamps[it->second.slot] = 0;
-    }
-  }
+  if (fresh) it->second.key = s;
   return it->second;
 }
 
@@ -35,11 +25,7 @@ template <std::size_t D>
 auto WellSpacedSet<D>::Impl::adjacent_leaves(Leaf& L) -> const std::vector<Leaf*>& {
   if (!L.adjacent_ok) {
     L.adjacent.clear();
-    L.adjacent_slot.clear();
-    for (const K& n : tree.adjacent_leaves(L.key)) {
-      L.adjacent.push_back(&leaves.at(n));
-      L.adjacent_slot.push_back(L.adjacent.back()->slot);
-    }
+    for (const K& n : tree.adjacent_leaves(L.key)) L.adjacent.push_back(&leaves.at(n));
     L.adjacent_ok = true;
   }
   return L.adjacent;
