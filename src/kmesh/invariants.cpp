@@ -361,10 +361,33 @@ CheckResult check_size_conformity(const Mesh& m) {
   return r;
 }
 
+CheckResult check_active_per_ball(const Mesh& m) {
+  CheckResult r{"L4.3.3", {}, 0};
+  // The vertices active at each rank: the nuclei of the satellites considered there (U1).
+  std::map<Rank, std::vector<std::pair<Dyadic, int>>> active;  // rank → (x, nucleus)
+  for (auto& c : m.considered) active[c.rank].push_back({m.spanner.position(c.nucleus)[0], c.nucleus});
+  for (auto& [l, at] : active) {
+    std::sort(at.begin(), at.end());
+    at.erase(std::unique(at.begin(), at.end()), at.end());
+    const Dyadic radius(exact::Integer(kScale), l - 3);
+    for (auto& [x, v] : at) {
+      const Point2& c = m.spanner.position(v);
+      std::size_t count = 0;  // active vertices u with |uc| ≤ 2^(ℓ−3), scanned by x window
+      auto it = std::lower_bound(at.begin(), at.end(), std::pair<Dyadic, int>{x - radius, -1});
+      for (; it != at.end() && it->first <= x + radius; ++it) count += within_exact(m.spanner.position(it->second), c, 1, l - 3);
+      r.measured = std::max(r.measured, double(count));
+      if (count > kActivePerBall)
+        add(r, std::to_string(count) + " vertices active at rank " + std::to_string(l) + " within 2^(rank-3) of vertex " +
+                   std::to_string(v) + " (bound " + std::to_string(kActivePerBall) + ")");
+    }
+  }
+  return r;
+}
+
 std::vector<CheckResult> check_all(const Mesh& m) {
   return {check_spanner(m.spanner),       check_ball_empty(m), check_independent_set(m), check_empty_balls(m),
           check_voronoi_candidates(m),    check_min_ranks(m),  check_delaunay(m),        check_well_spaced(m),
-          check_size_conformity(m)};
+          check_size_conformity(m),       check_active_per_ball(m)};
 }
 
 CheckResult check_active_satellites(const Mesh& m) {
@@ -395,7 +418,7 @@ CheckResult check_active_satellites(const Mesh& m) {
 std::vector<CheckResult> check_all_updated(const Mesh& m) {
   return {check_spanner(m.spanner),    check_active_satellites(m), check_independent_set(m), check_empty_balls(m),
           check_voronoi_candidates(m), check_min_ranks(m),         check_delaunay(m),        check_well_spaced(m),
-          check_size_conformity(m)};
+          check_size_conformity(m),    check_active_per_ball(m)};
 }
 
 }  // namespace kmr::kmesh

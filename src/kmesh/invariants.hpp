@@ -15,7 +15,10 @@
 //  * wellspaced: |v c| ≤ 9/2·NN(v) for every circumcenter c of a triangle at v (the domain of a hull
 //    vertex is the convex hull of its Voronoi vertices and itself, spec/kmesh.md);
 //  * size conformity (L4.2.8): max lfs(v)/NN_M(v) reported (lfs = distance to the second-nearest
-//    input point), a measured constant.
+//    input point), a measured constant;
+//  * L4.3.3  at every rank ℓ, a closed ball of radius 2^(ℓ−3) centred at an active vertex holds at most
+//            kActivePerBall active vertices (the packing bound of the lemma's proof, derived in
+//            spec/kmesh.md); the largest count is reported.
 #include <string>
 #include <vector>
 
@@ -39,6 +42,12 @@ CheckResult check_min_ranks(const Mesh& m);          // L4.2.10
 CheckResult check_delaunay(const Mesh& m);
 CheckResult check_well_spaced(const Mesh& m);        // L4.2.3 / L4.2.7, measured max |vc|/NN(v)
 CheckResult check_size_conformity(const Mesh& m);    // L4.2.8, measured max lfs/NN
+// L4.3.3's constant for balls of radius 2^(ℓ−3): at most 1 vertex active by its activation rank ℓ
+// (L4.2.6: pairwise > 2^(ℓ−2)) plus, per ray of rank ℓ−1, at most 5 nuclei of converted satellites
+// (L4.2.6: pairwise > 2^(ℓ−3), and at most 5 points pairwise farther than r fit in a closed disc of
+// radius r): 1 + 12·5.
+inline constexpr std::size_t kActivePerBall = 61;
+CheckResult check_active_per_ball(const Mesh& m);    // L4.3.3, measured max count
 std::vector<CheckResult> check_all(const Mesh& m);
 // U1 of kmesh/update.hpp: the considered satellites are exactly the 12 per rank of the active
 // vertices (ρ_v ≤ ℓ ≤ Λ+4, and ℓ = ρ_v or v has a converted (ℓ−1)-satellite).

@@ -87,6 +87,11 @@ TEST(AuditThresholds, T4_3_7_UpdateOperationsMayAtMostDouble) {
   expect_bound("T4.3.7", "T4.3.7 ops per update ÷ lg Δ", Series{5, 10}, Series{5, 10.1}, "grow by 2.02 > 2");
 }
 
+// Quick mode: log2 Δ = 10 and 20; Fig. 4.5's operations per kinetic event ÷ lg Δ may at most double.
+TEST(AuditThresholds, T4_3_7_KineticEventOperationsMayAtMostDouble) {
+  expect_bound("T4.3.7-kinetic", "T4.3.7-kinetic ops per event ÷ lg Δ", Series{5, 10}, Series{5, 10.1}, "grow by 2.02 > 2");
+}
+
 TEST(AuditThresholds, T3_3_8_SquaresPerCallOrSteinerPerFillThatGrowFail) {
   auto squares = with_value("T3.3.8", "T3.3.8 squares per call at the largest n", 1e9);
   EXPECT_EQ(word(squares), "FAIL");

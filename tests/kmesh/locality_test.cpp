@@ -3,9 +3,11 @@
 // uniform points of [0, 2^lgΔ]^2), for every insertion, deletion and relocation (a kinetic event's
 // repair, Updater::relocate), the counts kept by the Updater (UpdateStats) and the active vertices
 // of the updated mesh are compared with stated constants:
-//  L4.3.3  active vertices of rank ℓ within 2^(ℓ+1) of the focus: printed, NOT asserted — with
-//          n = 16 the count is bounded by n + 1 anyway (measured 13–16), so no stated constant
-//          below that could be told apart from the packing bound of the lemma;
+//  L4.3.3  active vertices of rank ℓ within 2^(ℓ+1) of the focus: printed only (with n = 16 it is
+//          bounded by n anyway); the lemma is asserted on balls of radius 2^(ℓ−3) against the packing
+//          constant kActivePerBall = 61 (check_active_per_ball) after every update here, and by the
+//          second test on a cluster of 65 points, where a vertex kept active without a converted
+//          satellite would put 65 active vertices in one ball;
 //  L4.3.4  every satellite taken from F_ℓ is within 2^(ℓ+kReach) of the focus;
 //  L4.3.5  |F_ℓ| ≤ kPerRank at every rank, and Σ_ℓ |F_ℓ| ≤ kAffected · lg Δ;
 //  L4.3.6  the spanner operations of the Remove calls ≤ kRemove · lg Δ;
@@ -22,6 +24,7 @@
 #include <random>
 #include <set>
 
+#include "kmesh/invariants.hpp"
 #include "kmesh/update.hpp"
 
 using namespace kmr::kmesh;
@@ -76,6 +79,8 @@ void check(const char* what, Updater& U, const std::vector<InputPoint>& live, co
   const double lg = lg_spread(live);
   const std::size_t act = active_near(U.mesh(), focus);
   SCOPED_TRACE(std::string(what) + " (lg Δ = " + std::to_string(lg) + ")");
+  const CheckResult packing = check_active_per_ball(U.mesh());
+  EXPECT_TRUE(packing.ok()) << packing.violations.front();
   EXPECT_LE(s.reach, kReach) << "L4.3.4";
   EXPECT_LE(s.affected_max_rank, kPerRank) << "L4.3.5";
   EXPECT_LE(double(s.affected), kAffected * lg) << "L4.3.5";
@@ -129,4 +134,34 @@ TEST(KmeshLocality, L4_3_3_to_L4_3_6_AnUpdateTouchesABoundedNeighbourhoodPerRank
                 lg, m.updates, m.active, (long long)m.reach, (long long)kReach, m.per_rank, kPerRank,
                 m.affected, kAffected, m.remove, kRemove, m.stars, kStars);
   }
+}
+
+// L4.3.3 where its constant can be told apart from n: an 8 × 8 grid of spacing 1 and one point
+// 2^12 away (n = 65 > kActivePerBall = 61), so at the ranks above the grid's diameter every grid
+// vertex lies in one ball of radius 2^(ℓ−3). After the construction, an insertion into the grid, a
+// deletion and a relocation (a kinetic event's repair), every such ball centred at an active vertex
+// holds ≤ 61 active vertices (brute force over m.considered, check_active_per_ball).
+TEST(KmeshLocality, L4_3_3_ActiveVerticesPerBallWithinThePackingBoundOnA65PointCluster) {
+  std::vector<InputPoint> pts;
+  for (int x = 0; x < 8; ++x)
+    for (int y = 0; y < 8; ++y) pts.push_back({Integer(x), Integer(y)});
+  pts.push_back({Integer(1) << 12, Integer(5)});
+  Updater U(pts);
+  double most = 0;
+  auto expect_bound = [&](const char* what) {
+    const CheckResult r = check_active_per_ball(U.mesh());
+    EXPECT_TRUE(r.ok()) << what << ": " << r.violations.front();
+    EXPECT_GE(r.measured, 1) << what << ": no active vertex counted";
+    most = std::max(most, r.measured);
+  };
+  expect_bound("construction");
+  const InputPoint q{Integer(3), Integer(100)};  // a new point just off the grid
+  U.insert(q);
+  expect_bound("insertion");
+  U.erase(q);
+  expect_bound("deletion");
+  U.relocate({pts[27]});
+  expect_bound("relocation");
+  std::printf("L4.3.3: most active vertices in a ball of radius 2^(l-3) %.0f (bound %zu, n = %zu)\n", most, kActivePerBall,
+              pts.size());
 }
