@@ -302,8 +302,8 @@ Verdict t437(const Options& o) {
   if (!ok) v.summary = "a brute-force invariant fails after an update (see the violation figures); ";
   if (!(growth <= 2)) v.summary += "operations per update ÷ log Δ grow by " + fmt(growth) + " > 2; ";
   v.summary += "Fig. 4.5 insertions and deletions of points at rest: brute-force invariants (L4.3.2 and the output's) hold after "
-              "every update; operations of the change propagation ÷ log Δ do not grow with Δ (the Delaunay stage is "
-              "recomputed globally and not counted; kinetic events: T4.3.7-kinetic)";
+              "every update; operations of the change propagation ÷ log Δ do not grow with Δ (the local Delaunay repair's "
+              "operations, UpdateStats::ops_delaunay, are not in this figure; kinetic events: T4.3.7-kinetic)";
   return v;
 }
 
