@@ -20,9 +20,10 @@ endfunction()
 # built with a macro its user lacks, e.g. audit_report_test's KMR_CLAIMS_MD), and reused (REUSE_FROM)
 # by every target of the family. The headers are only included earlier than the files include them;
 # scripts/sanitize.sh builds without PCH, so a file that forgets an include still breaks CI.
-# Default: on for GCC without a compiler launcher; off with ccache (a warm cache is faster still, and
-# PCH hits in ccache need sloppiness settings). GCC only: clang refuses a PCH built with other flags
-# (the fuzz build's sanitizer flags differ between layers) where GCC falls back to the plain header.
+# Default: on for GCC without a compiler launcher; off with ccache (a cache hit skips the compiler
+# altogether, and PCH hits in ccache need sloppiness settings). GCC only: clang refuses a PCH built
+# with other flags (the fuzz build's sanitizer flags differ between layers) where GCC falls back to
+# the plain header.
 if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND NOT CMAKE_CXX_COMPILER_LAUNCHER)
   set(kmr_pch_default ON)
 else()
@@ -50,7 +51,8 @@ function(kmr_pch target family)
   set(owner kmr_pch_${family})
   if(NOT TARGET ${owner})
     set(empty ${CMAKE_BINARY_DIR}/kmr_pch_${family}.cpp)
-    file(WRITE ${empty} "// The owner of the ${family} family's precompiled header (cmake/kmr.cmake).\n")
+    # CONFIGURE writes only when the text changes, so a reconfigure does not rebuild the owners.
+    file(CONFIGURE OUTPUT ${empty} CONTENT "// The owner of the ${family} family's precompiled header (cmake/kmr.cmake).\n")
     add_library(${owner} OBJECT ${empty})
     target_link_libraries(${owner} PRIVATE ${kmr_pch_libs_${family}})
     target_precompile_headers(${owner} PRIVATE ${kmr_pch_${family}})

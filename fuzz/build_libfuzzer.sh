@@ -13,6 +13,12 @@ flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize
 CC=${cxx/clang++/clang} CXX=$cxx CFLAGS=$flags CXXFLAGS=$flags LIB_FUZZING_ENGINE=-fsanitize=fuzzer \
   OUT=$dir/bin WORK=$dir bash "$src/fuzz/oss_fuzz_build.sh"
 status=0
+# The contract's flags are the compiler's flags: no kmr source is compiled with an optimisation level
+# of its own on top of them (a CMake build type would append one, e.g. Release's -O3).
+if grep -qE '"command": .* -O[0-9s] .* -O[0-9s] ' "$dir/kmr-fuzz-build/compile_commands.json"; then
+  echo "build_libfuzzer: a compile adds an optimisation level to CXXFLAGS ($dir/kmr-fuzz-build/compile_commands.json)" >&2
+  status=1
+fi
 for cpp in "$src"/fuzz/*_fuzzer.cpp; do
   name=$(basename "$cpp" _fuzzer.cpp)
   bin=$dir/bin/${name}_fuzzer

@@ -17,7 +17,8 @@ if command -v ccache >/dev/null 2>&1; then
   export CCACHE_BASEDIR="$src"
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
 fi
-cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release "${launcher[@]}" \
+# Build type None: the contract's flags alone set the optimisation (Release would append -O3 to them).
+cmake -S "$src" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=None "${launcher[@]}" \
   -DCMAKE_C_COMPILER="$CC" -DCMAKE_CXX_COMPILER="$CXX" -DCMAKE_C_FLAGS="${CFLAGS:-}" -DCMAKE_CXX_FLAGS="${CXXFLAGS:-}" \
   -DKMR_FUZZ=ON -DKMR_FUZZ_ENGINE="$LIB_FUZZING_ENGINE" -DKMR_TESTS=OFF -DKMR_ORACLES=OFF -DKMR_BENCH=OFF >/dev/null
 cmake --build "$build" -j "$(nproc)" --target kmr_fuzzers
