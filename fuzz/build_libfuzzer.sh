@@ -15,8 +15,12 @@ CC=${cxx/clang++/clang} CXX=$cxx CFLAGS=$flags CXXFLAGS=$flags LIB_FUZZING_ENGIN
 status=0
 # The contract's flags are the compiler's flags: no kmr source is compiled with an optimisation level
 # of its own on top of them (a CMake build type would append one, e.g. Release's -O3).
-if grep -qE '"command": .* -O[0-9s] .* -O[0-9s] ' "$dir/kmr-fuzz-build/compile_commands.json"; then
-  echo "build_libfuzzer: a compile adds an optimisation level to CXXFLAGS ($dir/kmr-fuzz-build/compile_commands.json)" >&2
+commands=$dir/kmr-fuzz-build/compile_commands.json
+if [[ ! -s $commands ]]; then
+  echo "build_libfuzzer: no $commands to check the flags against" >&2
+  status=1
+elif grep -qE '"command": .* -O([0-9sgz]|fast) .* -O([0-9sgz]|fast) ' "$commands"; then
+  echo "build_libfuzzer: a compile adds an optimisation level to CXXFLAGS ($commands)" >&2
   status=1
 fi
 for cpp in "$src"/fuzz/*_fuzzer.cpp; do

@@ -36,11 +36,12 @@ int usage(std::ostream& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Freed memory stays for reuse: glibc's defaults give every freed block of 128 KiB or more back
-  // to the system and trim the heap's free top past 128 KiB, so a run after a run (the audit's best
-  // of 5 kinetic hulls: their simulator records and tables) faulted its pages in afresh, ≈ 6–12 µs
-  // a page in this VM (spec/hull.md, "Warm memory"). Blocks below 32 MiB now come from the heap,
-  // and up to 256 MiB of free heap top stays mapped. (No result depends on it.)
+  // Freed memory stays for reuse: glibc's mmap threshold starts at 128 KiB (and rises only as
+  // mmapped blocks are freed) and the heap's free top is trimmed past 128 KiB, so a run after a run
+  // (the audit's best of 5 kinetic hulls: their simulator records and tables) faulted its pages in
+  // afresh, ≈ 6–12 µs a page in this VM (spec/hull.md, "Warm memory"). Blocks below 32 MiB (glibc's
+  // largest threshold) now come from the heap, and up to 256 MiB of free heap top stays mapped. A
+  // refused setting leaves glibc's default. (No result depends on it.)
   mallopt(M_MMAP_THRESHOLD, 32 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
   if (argc < 2) {

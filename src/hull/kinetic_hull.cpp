@@ -299,13 +299,15 @@ void KineticHull::start() {
   simplex_ = initial_simplex_of(pts_, live_order);
   centre_sum_ = trajectory_sum(pts_[simplex_[0]], pts_[simplex_[1]], pts_[simplex_[2]], pts_[simplex_[3]]);
   refresh_machine_points();
-  // Room for the initial run's certificates up front (about 5 n log2 n, Fig. 2.8): no table
-  // growth or record moves during the run (issue 9; no decision depends on capacities).
+  // Room for the initial run's certificates up front (about 5 n log2 n, Fig. 2.8; 6 for margin): no
+  // table growth or record moves during the run (issue 9; no decision depends on capacities).
+  // Geometric, as a hull is started again at every rebuild.
   const double n = static_cast<double>(pts_.size());
   const auto expected = static_cast<std::size_t>(6 * n * std::log2(std::max(2.0, n)));
   certs_.reserve(expected);
   if (sim_) {
-    by_sim_.reserve(by_sim_.size() + expected);
+    if (by_sim_.capacity() < by_sim_.size() + expected)
+      by_sim_.reserve(std::max(by_sim_.size() + expected, 2 * by_sim_.capacity()));
     sim_->reserve(expected);
   }
   if (present_box_.empty())

@@ -41,8 +41,13 @@ MotionSimulator::MotionSimulator(int lattice_bits, Dyadic horizon, SimulatorOpti
 }
 
 void MotionSimulator::reserve(std::size_t more) {
-  slot_of_id_.reserve(slot_of_id_.size() + more);
-  if (free_slots_.size() < more) records_.reserve(records_.size() + (more - free_slots_.size()));
+  // Geometric, so that reserving again and again (a hull rebuilt at every integrated change) stays
+  // amortised O(1) per certificate instead of copying everything each time.
+  auto room = [](auto& v, std::size_t need) {
+    if (v.capacity() < need) v.reserve(std::max(need, 2 * v.capacity()));
+  };
+  room(slot_of_id_, slot_of_id_.size() + more);
+  if (free_slots_.size() < more) room(records_, records_.size() + (more - free_slots_.size()));
 }
 
 MotionSimulator::Record& MotionSimulator::record(CertificateId id) {

@@ -10,15 +10,9 @@
 #include <string>
 
 #include "exact/error.hpp"
+#include "sac/asan.hpp"
 
-#if defined(__SANITIZE_ADDRESS__)
-#define KMR_ASAN_FIBERS 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define KMR_ASAN_FIBERS 1
-#endif
-#endif
-#ifdef KMR_ASAN_FIBERS
+#ifdef KMR_ASAN
 #include <sanitizer/common_interface_defs.h>
 #endif
 
@@ -80,7 +74,9 @@ thread_local KeptHolder kept_holder;
 }  // namespace
 
 BigStack& BigStack::of_thread(std::size_t bytes) {
-  if (!kept || (kept->usable_ < bytes && !kept->running_)) {
+  KMR_CHECK(!kept || kept->usable_ >= bytes || !kept->running_,
+            "BigStack::of_thread: the thread's kept stack is running and smaller than " + std::to_string(bytes) + " bytes");
+  if (!kept || kept->usable_ < bytes) {
     auto fresh = std::make_unique<BigStack>(bytes);
     delete kept;
     kept = fresh.release();
@@ -103,7 +99,7 @@ void BigStack::enter(unsigned hi, unsigned lo) {
 
 void BigStack::body() {
   auto& c = *static_cast<Contexts*>(contexts_);
-#ifdef KMR_ASAN_FIBERS
+#ifdef KMR_ASAN
   __sanitizer_finish_switch_fiber(nullptr, &c.caller_bottom, &c.caller_size);
 #endif
   try {
@@ -113,7 +109,7 @@ void BigStack::body() {
   }
   // Back to the caller directly, never through this frame's epilogue: once AddressSanitizer has
   // been told that this stack's frames end (nullptr), no frame of it may be touched again.
-#ifdef KMR_ASAN_FIBERS
+#ifdef KMR_ASAN
   __sanitizer_start_switch_fiber(nullptr, c.caller_bottom, c.caller_size);
 #endif
   setcontext(&c.caller);
@@ -141,13 +137,13 @@ void BigStack::run(const std::function<void()>& f) {
   getcontext(&c.caller);
   if (!entered) {
     entered = true;
-#ifdef KMR_ASAN_FIBERS
+#ifdef KMR_ASAN
     __sanitizer_start_switch_fiber(&c.fake_stack, base_ + (mapped_ - usable_), usable_);
 #endif
     setcontext(&c.stack);
     KMR_CHECK(false, "sac::BigStack: setcontext failed");
   }
-#ifdef KMR_ASAN_FIBERS
+#ifdef KMR_ASAN
   __sanitizer_finish_switch_fiber(c.fake_stack, nullptr, nullptr);
 #endif
   running_ = false;

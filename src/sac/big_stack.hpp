@@ -17,7 +17,9 @@
 //  * Every run() of one BigStack uses the same mapping (its pages stay mapped until destruction).
 //  * run() called from inside f (already on this stack) calls f directly.
 //  * of_thread(bytes) returns the same object on every call from one thread while it is large
-//    enough; other threads get their own.
+//    enough; other threads get their own. Asking for more than the kept stack has while it runs
+//    throws ContractError. The kept stack is unmapped at thread exit, so std::exit must not be
+//    called from inside a run on it.
 //  * The constructor throws ContractError for a size below PTHREAD_STACK_MIN or one that cannot be
 //    mapped; destruction unmaps (while no run is in progress).
 // A BigStack belongs to one thread at a time (no locking), and f must return or throw: leaving it

@@ -1,12 +1,13 @@
 #include "sac/runtime.hpp"
 
 #include <atomic>
-#include <cstdlib>
-#include <mutex>
-
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <mutex>
 #include <new>
+
+#include "sac/asan.hpp"
 
 namespace kmr::sac {
 
@@ -17,7 +18,13 @@ namespace {
 // instead of faulting in fresh ones (chunks of 128 KiB and more come from mmap and go back to the
 // system when freed; issue 9, spec/sac.md "Warm memory"). Plain thread-locals, readable at any
 // time; the holder frees the kept chunks when the thread exits.
+// Under AddressSanitizer nothing is kept: a dead runtime's chunks are freed, so a stale pointer into
+// them is reported rather than reading the next runtime's nodes.
+#ifdef KMR_ASAN
+constexpr std::size_t kCacheBytes = 0;
+#else
 constexpr std::size_t kCacheBytes = std::size_t{64} << 20;
+#endif
 struct KeptChunks {
   struct Chunk {
     void* p;
@@ -28,15 +35,18 @@ struct KeptChunks {
   KeptChunks();
   ~KeptChunks();
 };
-thread_local bool kept_alive = false;  // trivially destructible: readable after the holder ended
+// The holder's state, trivially destructible so it is readable at any time: 0 not built yet, 1 alive,
+// 2 destroyed (a pool used from a later thread-exit or static destructor goes to the system).
+thread_local int kept_state = 0;
 thread_local KeptChunks kept;
-KeptChunks::KeptChunks() { kept_alive = true; }
+KeptChunks::KeptChunks() { kept_state = 1; }
 KeptChunks::~KeptChunks() {
-  kept_alive = false;
+  kept_state = 2;
   for (const Chunk& c : chunks) std::free(c.p);
 }
 
 void* take_chunk(std::size_t bytes) {
+  if (kept_state == 2 || kCacheBytes == 0) return std::aligned_alloc(4096, bytes);
   KeptChunks& k = kept;  // (constructs this thread's holder at its first use)
   for (std::size_t i = k.chunks.size(); i-- > 0;)
     if (k.chunks[i].bytes == bytes) {
@@ -48,7 +58,7 @@ void* take_chunk(std::size_t bytes) {
   return std::aligned_alloc(4096, bytes);
 }
 void give_chunk(void* p, std::size_t bytes) {
-  if (kept_alive && kept.bytes + bytes <= kCacheBytes) {
+  if (kept_state == 1 && kept.bytes + bytes <= kCacheBytes) {
     kept.chunks.push_back({p, bytes});
     kept.bytes += bytes;
   } else {

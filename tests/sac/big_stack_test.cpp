@@ -208,6 +208,11 @@ TEST(SacBigStack, OfThreadIsOneKeptStackPerThreadAndTrimGivesBackItsDeepPages) {
   std::uint64_t again = 0;
   a.run([&] { again = deep.sum(2048); });  // usable after a trim (the pages fault in again)
   EXPECT_EQ(again, 2048u * 2049u / 2);
+  // Asking for more while it runs is refused (it cannot be replaced under its own frames).
+  std::string refused;
+  a.run([&] { refused = error_of([&] { BigStack::of_thread(a.usable() + (std::size_t{1} << 20)); }); });
+  EXPECT_NE(refused.find("running and smaller"), std::string::npos) << refused;
+  EXPECT_EQ(BigStack::kept_of_thread(), &a);
 }
 
 TEST(SacBigStack, RefusedSizesAndTheOneShotWithStack) {
