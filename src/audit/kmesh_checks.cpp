@@ -20,14 +20,20 @@ namespace {
 
 using namespace kmr::kmesh;
 
-std::vector<InputPoint> uniform(std::size_t n, std::uint64_t seed, int range) {
-  std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<int> d(0, range);
-  std::vector<InputPoint> in;
+// Adds distinct points drawn from d × d to `in` until it has n points.
+void fill_distinct(std::vector<InputPoint>& in, std::size_t n, std::mt19937_64& rng,
+                   std::uniform_int_distribution<long long>& d) {
   while (in.size() < n) {
     InputPoint p{exact::Integer(d(rng)), exact::Integer(d(rng))};
     if (std::find(in.begin(), in.end(), p) == in.end()) in.push_back(p);
   }
+}
+
+std::vector<InputPoint> uniform(std::size_t n, std::uint64_t seed, int range) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<long long> d(0, range);
+  std::vector<InputPoint> in;
+  fill_distinct(in, n, rng, d);
   return in;
 }
 
@@ -244,6 +250,24 @@ Verdict l441(const Options& o) {
   return v;
 }
 
+// The O(log Δ) judgment T4.3.7 and T4.3.7-kinetic share: `ratio` (one per lg in `lgs`) goes
+// through audit.hpp's seam under `seam`; the ratio at the largest Δ ÷ the smallest is reported,
+// plotted against its pass bound (≤ 2) and returned.
+double judge_growth_per_lg(Verdict& v, const Options& o, const std::string& seam, const std::vector<int>& lgs,
+                           std::vector<double> ratio, const svg::Series& series, const std::string& title) {
+  ratio = measured(o, seam, ratio);  // the judged figures
+  const double growth = ratio.back() / ratio.front();
+  v.figure("ratio at largest ÷ smallest Δ (bounded: ≤ 2)", fmt(growth));
+  svg::Plot p;
+  p.title = title;
+  p.x = svg::linear_axis("log2 Delta", "spread");
+  p.y = svg::linear_axis("operations / log2 Delta");
+  p.series = {series};
+  p.bounds.push_back(svg::constant_bound("pass bound: 2 x first ratio", 2 * ratio.front(), double(lgs.front()), double(lgs.back())));
+  v.plot(std::move(p));
+  return growth;
+}
+
 // T4.3.7 (with L4.3.2): the dynamic update of Fig. 4.5 (kmesh/update.hpp). For growing spread Δ:
 // n − 1 uniform points in [0, 2^k]^2 plus one at distance 1 of the first; insert a random point,
 // then delete it. After each update the brute-force invariants hold (check_all_updated: spanner,
@@ -260,10 +284,7 @@ Verdict t437(const Options& o) {
     std::mt19937_64 rng(o.seed + lg);
     std::uniform_int_distribution<long long> d(0, 1LL << lg);
     std::vector<InputPoint> in{{exact::Integer(0), exact::Integer(0)}, {exact::Integer(1), exact::Integer(0)}};
-    while (in.size() < n) {
-      InputPoint p{exact::Integer(d(rng)), exact::Integer(d(rng))};
-      if (std::find(in.begin(), in.end(), p) == in.end()) in.push_back(p);
-    }
+    fill_distinct(in, n, rng, d);
     Mesh fresh = construct(in);
     double ops_constr = double(fresh.ops_spanner + fresh.ops_convert + fresh.ops_delaunay);
     Updater U(in);
@@ -287,18 +308,10 @@ Verdict t437(const Options& o) {
     v.figure("lg Δ=" + std::to_string(lg) + " ops/update ÷ lg Δ", fmt(r));
     v.figure("lg Δ=" + std::to_string(lg) + " construction ops ÷ update ops", fmt(ops_constr / (ops / 2)));
   }
-  ratio = measured(o, "T4.3.7 ops per update ÷ lg Δ", ratio);  // the judged figures (audit.hpp's seam)
-  const double growth = ratio.back() / ratio.front();
-  v.figure("ratio at largest ÷ smallest Δ (bounded: ≤ 2)", fmt(growth));
+  const double growth = judge_growth_per_lg(v, o, "T4.3.7 ops per update ÷ lg Δ", lgs, ratio, series,
+                                            "T4.3.7: operations per dynamic update / log2 Delta against log2 Delta");
   v.pass = ok && growth <= 2;
   v.thesis = "Thm 4.3.7: a dynamic change is repaired in O(log Δ) (no constant given); Lemma 4.3.2 after every rank";
-  svg::Plot p;
-  p.title = "T4.3.7: operations per dynamic update / log2 Delta against log2 Delta";
-  p.x = svg::linear_axis("log2 Delta", "spread");
-  p.y = svg::linear_axis("operations / log2 Delta");
-  p.series = {series};
-  p.bounds.push_back(svg::constant_bound("pass bound: 2 x first ratio", 2 * ratio.front(), double(lgs.front()), double(lgs.back())));
-  v.plot(std::move(p));
   if (!ok) v.summary = "a brute-force invariant fails after an update (see the violation figures); ";
   if (!(growth <= 2)) v.summary += "operations per update ÷ log Δ grow by " + fmt(growth) + " > 2; ";
   v.summary += "Fig. 4.5 insertions and deletions of points at rest: brute-force invariants (L4.3.2 and the output's) hold after "
@@ -326,10 +339,7 @@ Verdict t437_kinetic(const Options& o) {
     std::uniform_int_distribution<long long> d(5, 1LL << lg);
     std::vector<InputPoint> in{{exact::Integer(0), exact::Integer(0)},
                                {exact::Integer(1), exact::Integer(0), exact::Integer(0), exact::Integer(1)}};
-    while (in.size() < n) {
-      InputPoint p{exact::Integer(d(rng)), exact::Integer(d(rng))};
-      if (std::find(in.begin(), in.end(), p) == in.end()) in.push_back(p);
-    }
+    fill_distinct(in, n, rng, d);
     KineticMesh k(in, 3);
     std::size_t relocating = 0, events = 0;
     double ops = 0;
@@ -367,18 +377,10 @@ Verdict t437_kinetic(const Options& o) {
     v.figure("lg Δ=" + std::to_string(lg) + " Fig. 4.5 ops per event ÷ lg Δ", fmt(per_event));
   }
   if (ratio.size() != lgs.size()) ratio.assign(lgs.size(), 1);  // a missing batch already failed above
-  ratio = measured(o, "T4.3.7-kinetic ops per event ÷ lg Δ", ratio);  // the judged figures (audit.hpp's seam)
-  const double growth = ratio.back() / ratio.front();
-  v.figure("ratio at largest ÷ smallest Δ (bounded: ≤ 2)", fmt(growth));
+  const double growth = judge_growth_per_lg(v, o, "T4.3.7-kinetic ops per event ÷ lg Δ", lgs, ratio, series,
+                                            "T4.3.7: Fig. 4.5 operations per kinetic event / log2 Delta against log2 Delta");
   v.pass = ok && growth <= 2;
   v.thesis = "Thm 4.3.7: a kinetic event is repaired in O(log Δ) (no constant given); Lemmas 4.3.1-4.3.3 after every batch";
-  svg::Plot p;
-  p.title = "T4.3.7: Fig. 4.5 operations per kinetic event / log2 Delta against log2 Delta";
-  p.x = svg::linear_axis("log2 Delta", "spread");
-  p.y = svg::linear_axis("operations / log2 Delta");
-  p.series = {series};
-  p.bounds.push_back(svg::constant_bound("pass bound: 2 x first ratio", 2 * ratio.front(), double(lgs.front()), double(lgs.back())));
-  v.plot(std::move(p));
   if (!ok) v.summary = "a brute-force invariant or certificate fails after a kinetic batch (see the violation figures); ";
   if (!(growth <= 2)) v.summary += "operations per kinetic event ÷ log Δ grow by " + fmt(growth) + " > 2; ";
   v.summary += "kinetic KDS (a close pair moving, batches repaired by Fig. 4.5): the invariants (L4.3.2, L4.3.3, the output's) "

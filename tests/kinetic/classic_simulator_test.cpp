@@ -70,7 +70,9 @@ TEST(ClassicSimulator, A2_1_EventAtATimeEqualsLatticeBatchesAndTheExactSort) {
     const auto& c = classic.counters();
     EXPECT_GT(c.events, 100);
     EXPECT_GT(c.bisection_steps, 0);
-    if (meet) EXPECT_GT(c.ties, 0);  // the simultaneous crossings at t = 1/4 needed equality
+    if (meet) {
+      EXPECT_GT(c.ties, 0);  // the simultaneous crossings at t = 1/4 needed equality
+    }
     EXPECT_EQ(checked, 8);
   }
 }
