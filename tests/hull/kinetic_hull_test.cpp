@@ -124,20 +124,22 @@ TEST(KineticHull, MachineCertificatesEqualTheExactOnes) {
 
 // The machine certificate cubics (moving_points.hpp) against the Polynomial ones, which share no
 // arithmetic with them, coefficient by coefficient: entries on both sides of the int64 cross-product
-// fast path's 2^31 bound (rows of differences of points up to 2^29 … 2^36).
+// fast path's 2^31 bound (rows of differences of points up to 2^29 … 2^36); in the second half
+// position and velocity bits are drawn apart (slow points far out, fast points near the origin).
 TEST(KineticHull, MachineCertificatesArePolynomialOnes) {
   std::mt19937_64 rng(11);
-  for (int i = 0; i < 4000; ++i) {
+  for (int i = 0; i < 8000; ++i) {
     const int bits = 4 + static_cast<int>(rng() % 33);  // |coordinate| ≤ 2^bits, bits ≤ 36
-    const long long lim = (1LL << bits) - 1;
-    std::uniform_int_distribution<long long> c(-lim, lim);
+    const int vbits = i < 4000 ? bits : static_cast<int>(rng() % 37);  // |velocity| ≤ 2^vbits
+    const long long lim = (1LL << bits) - 1, vlim = (1LL << vbits) - 1;
+    std::uniform_int_distribution<long long> c(-lim, lim), cv(-vlim, vlim);
     std::array<MovingPoint, 5> p;
     std::array<MachinePoint, 5> m;
     for (int k = 0; k < 5; ++k) {
-      p[k] = linear(c(rng), c(rng), c(rng), c(rng), c(rng), c(rng));
+      p[k] = linear(c(rng), c(rng), c(rng), cv(rng), cv(rng), cv(rng));
       m[k] = *machine_point(p[k]);
     }
-    SCOPED_TRACE("case " + std::to_string(i) + ", bits " + std::to_string(bits));
+    SCOPED_TRACE("case " + std::to_string(i) + ", bits " + std::to_string(bits) + ", velocity bits " + std::to_string(vbits));
     ASSERT_EQ(orientation_polynomial(m[0], m[1], m[2], m[3]).to_polynomial(), orientation_polynomial(p[0], p[1], p[2], p[3]));
     const MovingPoint sum = trajectory_sum(p[0], p[1], p[2], p[4]);
     const MachinePoint msum = m[0] + m[1] + m[2] + m[4];
