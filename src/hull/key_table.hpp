@@ -70,8 +70,10 @@ class KeyTable {
   bool contains(const K& k) const { return find(k) != nullptr; }
   // Room for n entries without growth (the capacity only grows; no entry moves afterwards until
   // the table holds more than n).
-  void reserve(std::size_t n) {
-    while (2 * n > slots_.size()) grow();
+  void reserve(std::size_t n) {  // one allocation of the final size (not one per doubling)
+    std::size_t size = slots_.empty() ? 16 : slots_.size();
+    while (2 * n > size) size *= 2;
+    if (size > slots_.size()) rehash(size);
   }
   std::size_t capacity() const { return slots_.size() / 2; }  // entries that fit without growth
 
@@ -138,10 +140,11 @@ class KeyTable {
   static std::uint32_t hash(const K& k) { return static_cast<std::uint32_t>(Hash{}(k)); }
   std::size_t mask() const { return slots_.size() - 1; }
   std::size_t next(std::size_t i) const { return (i + 1) & mask(); }
-  void grow() {  // capacity ≤ 2^32 (the stored hash's bits)
-    KMR_CHECK(slots_.size() < (std::size_t{1} << 32), "KeyTable: more than 2^31 entries");
+  void grow() { rehash(slots_.empty() ? 16 : 2 * slots_.size()); }
+  void rehash(std::size_t size) {  // size: a power of two ≤ 2^32 (the stored hash's bits)
+    KMR_CHECK(size <= (std::size_t{1} << 32), "KeyTable: more than 2^31 entries");
     std::vector<Slot> old = std::move(slots_);
-    slots_.assign(old.empty() ? 16 : 2 * old.size(), Slot{});
+    slots_.assign(size, Slot{});
     for (Slot& s : old) {
       if (!s.full) continue;
       std::size_t i = s.hash & mask();

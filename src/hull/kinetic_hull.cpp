@@ -296,9 +296,11 @@ void KineticHull::start() {
   for (int x : order_)
     if (present_[x]) live_order.push_back(x);
   refuse_identical_trajectories(pts_);
-  simplex_ = initial_simplex_of(pts_, live_order);
+  machine_.clear();
+  for (const MovingPoint& p : pts_) machine_.push_back(machine_point(p));
+  simplex_ = initial_simplex_of(pts_, live_order, machine_);  // its tests in machine form (no GMP)
   centre_sum_ = trajectory_sum(pts_[simplex_[0]], pts_[simplex_[1]], pts_[simplex_[2]], pts_[simplex_[3]]);
-  refresh_machine_points();
+  refresh_machine_centre();
   // Room for the initial run's certificates up front (about 5 n log2 n, Fig. 2.8; 6 for margin): no
   // table growth or record moves during the run (issue 9; no decision depends on capacities).
   // Geometric, as a hull is started again at every rebuild.
@@ -323,6 +325,10 @@ void KineticHull::refresh_machine_points(int x) {
   } else {
     machine_[static_cast<std::size_t>(x)] = machine_point(pts_[static_cast<std::size_t>(x)]);
   }
+  refresh_machine_centre();
+}
+
+void KineticHull::refresh_machine_centre() {
   machine_centre_.reset();
   bool all = true;
   for (int v : simplex_) all = all && machine_[v].has_value();
@@ -499,7 +505,7 @@ void KineticHull::set_present(int x, bool on) {
     if (present_[y]) live_order.push_back(y);
   std::array<int, 4> now_simplex;
   try {
-    now_simplex = initial_simplex_of(pts_, live_order);
+    now_simplex = initial_simplex_of(pts_, live_order, machine_);
   } catch (const InputError&) {
     present_[x] = !on;
     throw;

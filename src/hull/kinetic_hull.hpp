@@ -152,6 +152,7 @@ class KineticHull {
   // The machine forms of point x (all points when x < 0), the centre sum's and t_'s lattice form
   // (t_lattice_ is used by from-scratch references only, whose t_ never changes).
   void refresh_machine_points(int x = -1);
+  void refresh_machine_centre();  // machine_centre_ and t_lattice_ from machine_, simplex_ and t_
   std::string describe(Test test, int a, int b, int c, int d) const;
 
   void init_certificate(CertificateMod& m, Test test, int a, int b, int c, int d);

@@ -194,11 +194,34 @@ void refuse_identical_trajectories(const std::vector<MovingPoint>& points) {
   if (best_a >= 0) refuse(best_a, best_b);
 }
 
+namespace {
+// (q − p) × (r − p) ≡ 0 as polynomials in t, for machine points: each component is a quadratic
+// whose coefficients are sums of two products of entries ≤ 2^37 (|·| < 2^76: exact in __int128).
+bool machine_collinear(const MachinePoint& p, const MachinePoint& q, const MachinePoint& r) {
+  const MachinePoint u = difference(q, p), w = difference(r, p);
+  using I = __int128;
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;  // component k of u × w: u_i w_j − u_j w_i
+    const I c0 = I(u.x[i]) * w.x[j] - I(u.x[j]) * w.x[i];
+    const I c1 = I(u.x[i]) * w.v[j] + I(u.v[i]) * w.x[j] - I(u.x[j]) * w.v[i] - I(u.v[j]) * w.x[i];
+    const I c2 = I(u.v[i]) * w.v[j] - I(u.v[j]) * w.v[i];
+    if (c0 != 0 || c1 != 0 || c2 != 0) return false;
+  }
+  return true;
+}
+}  // namespace
+
 std::array<int, 4> initial_simplex_of(const std::vector<MovingPoint>& pts, const std::vector<int>& order) {
+  return initial_simplex_of(pts, order, std::vector<std::optional<MachinePoint>>(pts.size()));
+}
+
+std::array<int, 4> initial_simplex_of(const std::vector<MovingPoint>& pts, const std::vector<int>& order,
+                                      const std::vector<std::optional<MachinePoint>>& machine) {
   const std::size_t n = order.size();
   if (n < 4) throw InputError("fewer than four points: a 3D hull needs four affinely independent points");
   const int a = order[0], b = order[1];  // trajectories are distinct (refused otherwise)
   auto collinear = [&](int x) {
+    if (machine[a] && machine[b] && machine[x]) return machine_collinear(*machine[a], *machine[b], *machine[x]);
     using geometry::operator-;
     auto u = pts[b] - pts[a], v = pts[x] - pts[a];
     return (u[1] * v[2] - u[2] * v[1]).is_zero() && (u[2] * v[0] - u[0] * v[2]).is_zero() &&
@@ -208,7 +231,12 @@ std::array<int, 4> initial_simplex_of(const std::vector<MovingPoint>& pts, const
   while (i < n && collinear(order[i])) ++i;
   if (i == n) throw InputError("all points stay collinear for all time: a 3D hull needs four affinely independent points");
   const int c = order[i];
-  while (i < n && orientation_polynomial(pts[a], pts[b], pts[c], pts[order[i]]).is_zero()) ++i;
+  auto coplanar = [&](int x) {
+    if (machine[a] && machine[b] && machine[c] && machine[x])
+      return orientation_polynomial(*machine[a], *machine[b], *machine[c], *machine[x]).is_zero();
+    return orientation_polynomial(pts[a], pts[b], pts[c], pts[x]).is_zero();
+  };
+  while (i < n && coplanar(order[i])) ++i;
   if (i == n) throw InputError("all points stay coplanar for all time: a 3D hull needs four affinely independent points");
   return {a, b, c, order[i]};
 }

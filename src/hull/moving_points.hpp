@@ -70,6 +70,10 @@ MovingPoint linear(long long x, long long y, long long z, long long vx, long lon
 
 void refuse_identical_trajectories(const std::vector<MovingPoint>& points);
 std::array<int, 4> initial_simplex_of(const std::vector<MovingPoint>& points, const std::vector<int>& order);
+// The same choice, each test in machine form where its points have one (machine[i] =
+// machine_point(points[i]); the same polynomials, without GMP: issue 9, Fig. 2.4's initial run).
+std::array<int, 4> initial_simplex_of(const std::vector<MovingPoint>& points, const std::vector<int>& order,
+                                      const std::vector<std::optional<MachinePoint>>& machine);
 
 // §2.4's integrated motion change r(t) ↦ ¾·r(t), kept an integer motion: every coefficient c
 // becomes 3c/4 truncated toward zero (exactly ¾·r(t) when the coefficients are multiples of 4).

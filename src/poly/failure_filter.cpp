@@ -277,10 +277,14 @@ std::int64_t root_free_until(const MachinePolynomial& p, int bits, std::int64_t 
   const double inv_scale = inv_pow2(bits);
   const double A = double(from) * inv_scale;  // exact
   // |p(A)| ≥ lo: the double value with filtered_sign_at's rigorous bound (as double_sign_at).
-  double y = c[static_cast<std::size_t>(n)], bound = std::fabs(y);
-  for (int i = n - 1; i >= 0; --i) {
-    y = y * A + c[static_cast<std::size_t>(i)];
-    bound = bound * A + std::fabs(c[static_cast<std::size_t>(i)]);
+  // At A = 0 (every certificate of an initial run) Horner's steps y·0 + c_i give c_0 exactly.
+  double y = c[0], bound = std::fabs(c[0]);
+  if (from != 0) {
+    y = c[static_cast<std::size_t>(n)], bound = std::fabs(y);
+    for (int i = n - 1; i >= 0; --i) {
+      y = y * A + c[static_cast<std::size_t>(i)];
+      bound = bound * A + std::fabs(c[static_cast<std::size_t>(i)]);
+    }
   }
   const double err = (2.0 * n + 2.0) * (bound * 0x1p-51);
   if (!(std::isfinite(y) && std::isfinite(bound) && bound >= 0x1p-900)) return from;
@@ -294,11 +298,15 @@ std::int64_t root_free_until(const MachinePolynomial& p, int bits, std::int64_t 
   // A guess s = 2^e with U_i s^i ≤ lo/8 for each i (exponents only); the test below decides.
   int e = 1 << 20;
   const int elo = floor_log2(lo);
-  for (int i = 1; i <= n; ++i) {
-    if (!(U[i] > 0)) continue;  // U_i is finite: A < 2^53 and |c_j| < 2^127 keep it below 2^236
+  // ⌊d/i⌋ for i = 1, 2, 3 with constant divisors (unrolled: the same values as a loop over i).
+  auto guess = [&](int i, auto floor_div) {
+    if (i > n || !(U[i] > 0)) return;  // U_i is finite: A < 2^53 and |c_j| < 2^127 keep it below 2^236
     const int d = elo - floor_log2(U[i]) - 4;  // lo/(8·U_i) ≥ 2^d
-    e = std::min(e, d >= 0 ? d / i : -((-d + i - 1) / i));  // ⌊d/i⌋
-  }
+    e = std::min(e, floor_div(d));
+  };
+  guess(1, [](int d) { return d; });
+  guess(2, [](int d) { return d >= 0 ? d / 2 : -((-d + 1) / 2); });
+  guess(3, [](int d) { return d >= 0 ? d / 3 : -((-d + 2) / 3); });
   // The window in lattice intervals: 2^(e+bits), capped at the horizon.
   const int le = e + bits;
   if (le < 0) return from;

@@ -124,25 +124,71 @@ TEST(KineticHull, MachineCertificatesEqualTheExactOnes) {
 
 // The machine certificate cubics (moving_points.hpp) against the Polynomial ones, which share no
 // arithmetic with them, coefficient by coefficient: entries on both sides of the int64 cross-product
-// fast path's 2^31 bound (rows of differences of points up to 2^29 … 2^36).
+// fast path's 2^31 bound (rows of differences of points up to 2^29 … 2^36); in the second half
+// position and velocity bits are drawn apart (slow points far out, fast points near the origin).
 TEST(KineticHull, MachineCertificatesArePolynomialOnes) {
   std::mt19937_64 rng(11);
-  for (int i = 0; i < 4000; ++i) {
+  for (int i = 0; i < 8000; ++i) {
     const int bits = 4 + static_cast<int>(rng() % 33);  // |coordinate| ≤ 2^bits, bits ≤ 36
-    const long long lim = (1LL << bits) - 1;
-    std::uniform_int_distribution<long long> c(-lim, lim);
+    const int vbits = i < 4000 ? bits : static_cast<int>(rng() % 37);  // |velocity| ≤ 2^vbits
+    const long long lim = (1LL << bits) - 1, vlim = (1LL << vbits) - 1;
+    std::uniform_int_distribution<long long> c(-lim, lim), cv(-vlim, vlim);
     std::array<MovingPoint, 5> p;
     std::array<MachinePoint, 5> m;
     for (int k = 0; k < 5; ++k) {
-      p[k] = linear(c(rng), c(rng), c(rng), c(rng), c(rng), c(rng));
+      p[k] = linear(c(rng), c(rng), c(rng), cv(rng), cv(rng), cv(rng));
       m[k] = *machine_point(p[k]);
     }
-    SCOPED_TRACE("case " + std::to_string(i) + ", bits " + std::to_string(bits));
+    SCOPED_TRACE("case " + std::to_string(i) + ", bits " + std::to_string(bits) + ", velocity bits " + std::to_string(vbits));
     ASSERT_EQ(orientation_polynomial(m[0], m[1], m[2], m[3]).to_polynomial(), orientation_polynomial(p[0], p[1], p[2], p[3]));
     const MovingPoint sum = trajectory_sum(p[0], p[1], p[2], p[4]);
     const MachinePoint msum = m[0] + m[1] + m[2] + m[4];
     ASSERT_EQ(centre_side_polynomial(m[3], m[1], m[2], msum).to_polynomial(), centre_side_polynomial(p[3], p[1], p[2], sum));
   }
+}
+
+// The initial tetrahedron's tests in machine form (issue 9) choose what the Polynomial tests
+// choose, or refuse with the same message: on moving lines and planes (identically collinear /
+// coplanar prefixes), on points coplanar or collinear only at t = 0, and on small grids.
+TEST(KineticHull, InitialSimplexInMachineFormEqualsTheExactChoice) {
+  std::mt19937_64 rng(44);
+  auto pick = [&rng](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  long long chosen = 0, refused = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const int family = trial % 4, n = pick(4, 9);
+    // A moving frame o + w·t, e1 + g1·t, e2 + g2·t; points o + s·e1 + r·e2 (+ their velocities).
+    auto vec = [&] { return std::array<long long, 3>{pick(-3, 3), pick(-3, 3), pick(-3, 3)}; };
+    const auto o = vec(), w = vec(), e1 = vec(), g1 = vec(), e2 = vec(), g2 = vec();
+    std::vector<MovingPoint> pts;
+    for (int i = 0; i < n; ++i) {
+      const long long s = pick(-4, 4), r = family == 0 ? 0 : pick(-4, 4);  // 0: a moving line
+      std::array<long long, 6> c{};
+      for (int k = 0; k < 3; ++k) c[k] = o[k] + s * e1[k] + r * e2[k], c[3 + k] = w[k] + s * g1[k] + r * g2[k];
+      if (family == 2 && i % 3 == 2) c[3 + pick(0, 2)] += pick(1, 2);  // leaves the plane after t = 0
+      if (family == 3) c = {pick(-1, 1), pick(-1, 1), pick(-1, 1), pick(-1, 1), pick(-1, 1), pick(-1, 1)};  // a grid
+      if (trial % 8 >= 4)  // beyond the 2^36 of machine_point for one coordinate of every point: mixed forms
+        for (int k = 0; k < 6; k += 5) c[k] *= (1LL << 20);
+      pts.push_back(linear(c[0], c[1], c[2], c[3], c[4], c[5]));
+    }
+    std::vector<std::optional<MachinePoint>> machine;
+    for (const auto& p : pts) machine.push_back(machine_point(p));
+    std::vector<int> order(pts.size());
+    for (int i = 0; i < n; ++i) order[i] = i;
+    std::shuffle(order.begin(), order.end(), rng);
+    auto choose = [&](const std::vector<std::optional<MachinePoint>>* m) -> std::string {
+      try {
+        const auto s = m ? initial_simplex_of(pts, order, *m) : initial_simplex_of(pts, order);
+        return std::to_string(s[0]) + " " + std::to_string(s[1]) + " " + std::to_string(s[2]) + " " + std::to_string(s[3]);
+      } catch (const InputError& e) {
+        return e.what();
+      }
+    };
+    const std::string exact = choose(nullptr), fast = choose(&machine);
+    EXPECT_EQ(fast, exact) << "trial " << trial;
+    (exact.find("points") == std::string::npos ? chosen : refused) += 1;
+  }
+  EXPECT_GT(chosen, 50);   // both outcomes occur
+  EXPECT_GT(refused, 50);
 }
 
 TEST(KineticHull, StartsCoplanar) {
