@@ -405,6 +405,18 @@ struct Polytope {
   // The box [lo, hi]; constraint 2i is x_i ≤ hi_i, 2i+1 is −x_i ≤ −lo_i.
   static Polytope box(const P& lo, const P& hi) {
     Polytope B;
+    B.reset_box(lo, hi);
+    return B;
+  }
+  // Makes this polytope the box [lo, hi], as box(lo, hi) builds it, keeping the storage of its
+  // vectors (issue 11 §4: the scan and the fill reuse one cell each instead of allocating a new
+  // one per call; test WellspacedPolytope.ReusedCellEqualsFreshCell).
+  void reset_box(const P& lo, const P& hi) {
+    Polytope& B = *this;
+    B.h.clear();
+    B.v.clear();
+    B.ring_.clear();
+    B.version = 0;
     for (std::size_t i = 0; i < D; ++i) {
       Halfspace<D, NT> up, dn;
       for (std::size_t j = 0; j < D; ++j) up.a[j] = dn.a[j] = NT(0);
@@ -434,7 +446,6 @@ struct Polytope {
       }
       if (full) B.ring_ = {0, 1, 3, 2};
     }
-    return B;
   }
 
   NT slack(const Halfspace<D, NT>& hs, const P& x) const { return dot(hs.a, x) - hs.b; }
