@@ -4,6 +4,9 @@
 #include "wellspaced/polytope.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <limits>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -277,6 +280,57 @@ TEST(WellspacedPolytope, PolygonWalkMatchesCombinatorialClipOnDegenerateCells) {
   std::printf("polygon walk: %d exact and %d interval cuts compared\n", walked_q, walked_i);
   EXPECT_GT(walked_q, 500);  // non-vacuous: the walk ran
   EXPECT_GT(walked_i, 200);
+}
+
+// double_filter::next_up / next_down (issue 11 §4: inline replacements of std::nextafter toward
+// ±∞) must equal std::nextafter bit for bit: zeros of both signs, the subnormal and normal
+// boundaries, ±max, ±∞, NaN, and 200 000 random bit patterns.
+TEST(WellspacedPolytope, NextUpDownEqualStdNextafter) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> xs = {0.0, -0.0, std::numeric_limits<double>::denorm_min(), -std::numeric_limits<double>::denorm_min(),
+                            std::numeric_limits<double>::min(), -std::numeric_limits<double>::min(),
+                            std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(), inf, -inf,
+                            std::numeric_limits<double>::quiet_NaN(), 1.0, -1.0, 0.5, -0.5, 0x1p-1022 - 0x1p-1074};
+  std::mt19937_64 g(1411);
+  for (int k = 0; k < 200000; ++k) xs.push_back(std::bit_cast<double>(g()));
+  int checked = 0;
+  for (double x : xs) {
+    const double u = double_filter::next_up(x), d = double_filter::next_down(x);
+    const double eu = std::nextafter(x, inf), ed = std::nextafter(x, -inf);
+    if (std::isnan(x)) {
+      EXPECT_TRUE(std::isnan(u) && std::isnan(d));
+      continue;
+    }
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(u), std::bit_cast<std::uint64_t>(eu)) << std::hexfloat << x;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(d), std::bit_cast<std::uint64_t>(ed)) << std::hexfloat << x;
+    ++checked;
+  }
+  EXPECT_GT(checked, 190000);
+}
+
+// Vert::set_enclosures computes |x|² as dot(xi, xi) (issue 11 §4: no subtraction of the origin);
+// the endpoints must equal those of dist2(xi, origin) bit for bit (the scan's certificate bounds
+// read them): random enclosures of both signs, straddling 0, points, zeros of both signs.
+TEST(WellspacedPolytope, VertexNormEnclosureEqualsDist2FromOrigin) {
+  std::mt19937_64 g(2026);
+  std::uniform_real_distribution<double> U(-1, 1);
+  std::uniform_int_distribution<int> W(0, 5);
+  int checked = 0;
+  for (int k = 0; k < 100000; ++k) {
+    Polytope<2, IntervalNT>::Vert x;
+    for (std::size_t i = 0; i < 2; ++i) {
+      double lo = k % 97 == 0 ? -0.0 : U(g) * std::ldexp(1.0, -W(g) * 10), hi = lo;
+      for (int s = W(g); s > 0; --s) hi = std::nextafter(hi, 2.0);  // 0–5 ulps wide
+      if (k % 5 == 0) hi = std::fabs(lo) * 0.75;                       // or straddling 0
+      x.x[i] = IntervalNT::hull(lo, hi);
+    }
+    x.set_enclosures();
+    const IntervalNT ref = dist2(x.xi, IPoint<2>{});
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(x.n2i.lo()), std::bit_cast<std::uint64_t>(ref.lo()));
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(x.n2i.hi()), std::bit_cast<std::uint64_t>(ref.hi()));
+    ++checked;
+  }
+  EXPECT_EQ(checked, 100000);
 }
 
 // Polytope::reset_box (issue 11 §4: the scan and the fill reuse one cell each) must leave nothing
