@@ -136,6 +136,17 @@ int filtered_sign(const IntervalNT& approx, Exact&& exact) {
 // ≤ γ_n·Σ|terms| < (n+1)·u·Σ|terms|; the bound's own roundings (< 4(D+2)u relative) and underflow
 // (each product ≤ 2^-1075 off) are covered by the factor 1 + 2^-40 and the absolute 2^-1000.
 namespace double_filter {
+
+// std::nextafter(x, +∞) and std::nextafter(x, −∞), inline (issue 11 §4: the library calls were
+// 2.4 % of a 2D run, from meet_lines_2d). Equal to std::nextafter for every x, NaN and ±∞
+// included (test WellspacedPolytope.NextUpDownEqualStdNextafter).
+inline double next_up(double x) {
+  if (x != x || x == std::numeric_limits<double>::infinity()) return x;
+  if (x == 0) return std::numeric_limits<double>::denorm_min();
+  const auto bits = std::bit_cast<std::uint64_t>(x);
+  return std::bit_cast<double>(x > 0 ? bits + 1 : bits - 1);
+}
+inline double next_down(double x) { return -next_up(-x); }
 inline constexpr double kSafety = 1 + 0x1p-40;
 inline constexpr double kTinyAbs = 0x1p-1000;
 // 1 / −1 when every point of the enclosures has Σ a_i·x_i − b of that sign; 0 undecided.
@@ -212,8 +223,7 @@ inline std::array<IntervalNT, 2> meet_lines_2d(const std::array<IntervalNT, 2>& 
   for (std::size_t i = 0; i < 2; ++i) {
     const double q = n[i].v / d.v, aq = std::fabs(q);
     const double e = ((n[i].err + aq * (1 + 0x1p-52) * d.err) / denom + aq * 0x1p-52) * kSafety + kTinyAbs;
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    x[i] = IntervalNT::hull(std::nextafter(q - e, -inf), std::nextafter(q + e, inf));  // throws if not finite
+    x[i] = IntervalNT::hull(next_down(q - e), next_up(q + e));  // throws if not finite
   }
   return x;
 }
@@ -316,7 +326,7 @@ inline bool solve_rows(const std::array<const IPoint<D>*, D>& a, const std::arra
   for (std::size_t i = 0; i < D; ++i) {
     const double m = xt[i] + c[i];
     const double rad = (rho[i] + rowG[i] * eta + 2 * u * std::fabs(m)) * kSafety + kTinyAbs;
-    const double lo = std::nextafter(m - rad, -inf), hi = std::nextafter(m + rad, inf);
+    const double lo = next_down(m - rad), hi = next_up(m + rad);
     if (!(std::fabs(lo) < inf && std::fabs(hi) < inf)) return false;
     x[i] = IntervalNT::hull(lo, hi);
   }
@@ -390,7 +400,7 @@ struct Polytope {
     IntervalNT n2i;  // enclosure of |x|² (the squared distance from the site at the origin)
     void set_enclosures() {
       xi = enclose<NT, D>(x);
-      n2i = dist2(xi, IPoint<D>{});
+      n2i = dot(xi, xi);  // = dist2(xi, origin) bit for bit: subtracting [−0, −0] changes no endpoint
     }
   };
   struct Constraint {
@@ -405,6 +415,18 @@ struct Polytope {
   // The box [lo, hi]; constraint 2i is x_i ≤ hi_i, 2i+1 is −x_i ≤ −lo_i.
   static Polytope box(const P& lo, const P& hi) {
     Polytope B;
+    B.reset_box(lo, hi);
+    return B;
+  }
+  // Makes this polytope the box [lo, hi], as box(lo, hi) builds it, keeping the storage of its
+  // vectors (issue 11 §4: the scan and the fill reuse one cell each instead of allocating a new
+  // one per call; test WellspacedPolytope.ReusedCellEqualsFreshCell).
+  void reset_box(const P& lo, const P& hi) {
+    Polytope& B = *this;
+    B.h.clear();
+    B.v.clear();
+    B.ring_.clear();
+    B.version = 0;
     for (std::size_t i = 0; i < D; ++i) {
       Halfspace<D, NT> up, dn;
       for (std::size_t j = 0; j < D; ++j) up.a[j] = dn.a[j] = NT(0);
@@ -434,7 +456,6 @@ struct Polytope {
       }
       if (full) B.ring_ = {0, 1, 3, 2};
     }
-    return B;
   }
 
   NT slack(const Halfspace<D, NT>& hs, const P& x) const { return dot(hs.a, x) - hs.b; }

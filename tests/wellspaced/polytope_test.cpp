@@ -4,6 +4,9 @@
 #include "wellspaced/polytope.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <limits>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -277,6 +280,120 @@ TEST(WellspacedPolytope, PolygonWalkMatchesCombinatorialClipOnDegenerateCells) {
   std::printf("polygon walk: %d exact and %d interval cuts compared\n", walked_q, walked_i);
   EXPECT_GT(walked_q, 500);  // non-vacuous: the walk ran
   EXPECT_GT(walked_i, 200);
+}
+
+// double_filter::next_up / next_down (issue 11 §4: inline replacements of std::nextafter toward
+// ±∞) must equal std::nextafter bit for bit: zeros of both signs, the subnormal and normal
+// boundaries, ±max, ±∞, NaN, and 200 000 random bit patterns.
+TEST(WellspacedPolytope, NextUpDownEqualStdNextafter) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> xs = {0.0, -0.0, std::numeric_limits<double>::denorm_min(), -std::numeric_limits<double>::denorm_min(),
+                            std::numeric_limits<double>::min(), -std::numeric_limits<double>::min(),
+                            std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(), inf, -inf,
+                            std::numeric_limits<double>::quiet_NaN(), 1.0, -1.0, 0.5, -0.5, 0x1p-1022 - 0x1p-1074};
+  std::mt19937_64 g(1411);
+  for (int k = 0; k < 200000; ++k) xs.push_back(std::bit_cast<double>(g()));
+  int checked = 0;
+  for (double x : xs) {
+    const double u = double_filter::next_up(x), d = double_filter::next_down(x);
+    const double eu = std::nextafter(x, inf), ed = std::nextafter(x, -inf);
+    if (std::isnan(x)) {
+      EXPECT_TRUE(std::isnan(u) && std::isnan(d));
+      continue;
+    }
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(u), std::bit_cast<std::uint64_t>(eu)) << std::hexfloat << x;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(d), std::bit_cast<std::uint64_t>(ed)) << std::hexfloat << x;
+    ++checked;
+  }
+  EXPECT_GT(checked, 190000);
+}
+
+// Vert::set_enclosures computes |x|² as dot(xi, xi) (issue 11 §4: no subtraction of the origin);
+// the endpoints must equal those of dist2(xi, origin) bit for bit (the scan's certificate bounds
+// read them): random enclosures of both signs, straddling 0, points, zeros of both signs.
+TEST(WellspacedPolytope, VertexNormEnclosureEqualsDist2FromOrigin) {
+  std::mt19937_64 g(2026);
+  std::uniform_real_distribution<double> U(-1, 1);
+  std::uniform_int_distribution<int> W(0, 5);
+  int checked = 0;
+  for (int k = 0; k < 100000; ++k) {
+    Polytope<2, IntervalNT>::Vert x;
+    for (std::size_t i = 0; i < 2; ++i) {
+      double lo = k % 97 == 0 ? -0.0 : U(g) * std::ldexp(1.0, -W(g) * 10), hi = lo;
+      for (int s = W(g); s > 0; --s) hi = std::nextafter(hi, 2.0);  // 0–5 ulps wide
+      if (k % 5 == 0) hi = std::fabs(lo) * 0.75;                       // or straddling 0
+      x.x[i] = IntervalNT::hull(lo, hi);
+    }
+    x.set_enclosures();
+    const IntervalNT ref = dist2(x.xi, IPoint<2>{});
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(x.n2i.lo()), std::bit_cast<std::uint64_t>(ref.lo()));
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(x.n2i.hi()), std::bit_cast<std::uint64_t>(ref.hi()));
+    ++checked;
+  }
+  EXPECT_EQ(checked, 100000);
+}
+
+// Polytope::reset_box (issue 11 §4: the scan and the fill reuse one cell each) must leave nothing
+// of the cell it overwrites: one cell R, reset before each run and never rebuilt, is clipped side
+// by side with a freshly built box F; after every cut the vertices, tight sets, constraints,
+// version and vertex cycle must be equal. R goes through full boxes, boxes flattened to a segment
+// (no cycle: the walk must not start from a stale one) and interval runs abandoned mid-clip.
+namespace {
+template <class NT>
+void compare_reused(Polytope<2, NT>& R, const std::vector<Halfspace<2, Q>>& cuts, std::array<double, 2> lo,
+                    std::array<double, 2> hi, const std::string& what, int& compared) {
+  const typename Polytope<2, NT>::P l{NT(lo[0]), NT(lo[1])}, u{NT(hi[0]), NT(hi[1])};
+  R.reset_box(l, u);
+  Polytope<2, NT> F = Polytope<2, NT>::box(l, u);
+  for (std::size_t c = 0; c <= cuts.size(); ++c) {
+    ASSERT_EQ(R.v.size(), F.v.size()) << what << " cut " << c;
+    for (std::size_t k = 0; k < R.v.size(); ++k)
+      EXPECT_TRUE(same_vertex<NT>(R.v[k], F.v[k])) << what << " cut " << c << " vertex " << k;
+    EXPECT_EQ(R.h.size(), F.h.size()) << what << " cut " << c;
+    EXPECT_EQ(R.version, F.version) << what << " cut " << c;
+    EXPECT_EQ(R.ring(), F.ring()) << what << " cut " << c;
+    ++compared;
+    if (c == cuts.size()) break;
+    const Halfspace<2, NT> h = in_nt<NT>(cuts[c]);
+    try {
+      F.clip(h);
+    } catch (const Uncertain&) {
+      try {
+        R.clip(h);  // leaves R mid-clip, as an abandoned interval-tier call does
+      } catch (const Uncertain&) {
+      }
+      return;
+    }
+    R.clip(h);
+  }
+}
+}  // namespace
+
+TEST(WellspacedPolytope, ReusedCellEqualsFreshCell) {
+  std::vector<std::vector<Halfspace<2, Q>>> families;
+  std::mt19937_64 g(14);
+  std::uniform_int_distribution<int> U(-6, 6);
+  for (int trial = 0; trial < 12; ++trial) {
+    std::vector<Halfspace<2, Q>> r;
+    for (int k = 0; k < 25; ++k) {
+      int x = U(g), y = U(g);
+      if (x || y) r.push_back(bisector_q(x, y, trial % 3 == 0 ? 64 : 16));  // /64: thin cells, interval ties
+    }
+    families.push_back(r);
+  }
+  const std::array<std::pair<std::array<double, 2>, std::array<double, 2>>, 4> boxes = {{
+      {{-1, -1}, {1, 1}}, {{0, 0}, {1, 1}}, {{-1, 0}, {1, 0}} /* a segment */, {{-0.5, -0.25}, {0.75, 0.5}}}};
+  Polytope<2, Q> Rq;
+  Polytope<2, IntervalNT> Ri;
+  int compared = 0;
+  for (std::size_t f = 0; f < families.size(); ++f)
+    for (std::size_t b = 0; b < boxes.size(); ++b) {
+      const std::string what = "family " + std::to_string(f) + " box " + std::to_string(b);
+      compare_reused<Q>(Rq, families[f], boxes[b].first, boxes[b].second, what + " (exact)", compared);
+      compare_reused<IntervalNT>(Ri, families[f], boxes[b].first, boxes[b].second, what + " (intervals)", compared);
+    }
+  std::printf("reused cells: %d states compared\n", compared);
+  EXPECT_GT(compared, 1000);  // non-vacuous
 }
 
 // double_filter::meet_lines_2d (the interval tier's new 2D vertices, issue 11 §4) must enclose the

@@ -156,29 +156,30 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
   const IPoint<D> vi{};
   const IPoint<D> vabs = point_in<IntervalNT, D>(v);
   auto rel = [&](const Pt& u) { return relative_to<NT, D>(u, v); };
-  struct QE {  // a square to scan, ordered by (lower bound on its distance, key)
-    double key;
-    Leaf* leaf;
-    bool operator>(const QE& o) const { return key != o.key ? key > o.key : leaf->key > o.leaf->key; }
+  ScanBuffers& buf = scan_buffers;
+  std::vector<ScanSquare>& heap = buf.heap;  // a min-heap by std::greater
+  heap.clear();
+  const std::greater<ScanSquare> later;
+  auto push = [&](const ScanSquare& q) {
+    heap.push_back(q);
+    std::push_heap(heap.begin(), heap.end(), later);
   };
-  std::priority_queue<QE, std::vector<QE>, std::greater<QE>> heap;
   const std::uint64_t stamp = ++scan_stamp;  // squares reached by this scan carry it
   const K start = vtx.at(v).leaf;
   Leaf& start_leaf = leaves.at(start);
-  heap.push({0.0, &start_leaf});
+  push({0.0, &start_leaf});
   start_leaf.stamp = stamp;
-  struct Cand {
-    double approx;   // |uv|² rounded (the clipping order)
-    IntervalNT d;    // |uv|² enclosed
-    Pt u;
-  };
-  std::vector<Cand> cand;
-  std::vector<std::pair<Leaf*, double>> late;  // squares popped after NN was fixed, with their heap keys
+  using Cand = ScanCandidate;
+  std::vector<Cand>& cand = buf.cand;
+  cand.clear();
+  std::vector<std::pair<Leaf*, double>>& late = buf.late;  // squares popped after NN was fixed, with their heap keys
+  late.clear();
   double best = std::numeric_limits<double>::infinity();  // upper bound on NN²
   bool nn_fixed = false;
   double limit = std::numeric_limits<double>::infinity();
-  std::optional<Polytope<D, NT>> C;
-  std::vector<int> cidx;  // constraint index of cand[i] in C (−1: its bisector misses C)
+  Polytope<D, NT>* C = nullptr;  // set when NN is fixed
+  std::vector<int>& cidx = buf.cidx;  // constraint index of cand[i] in C (−1: its bisector misses C)
+  cidx.clear();
   double maxd = 0;        // upper bound on max_{c ∈ C} |cv|²
   auto clip_from = [&](std::size_t i0) {
     for (std::size_t i = i0; i < cand.size(); ++i) {
@@ -219,14 +220,16 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
       lo[i] = NT(-R);
       hi[i] = NT(R);
     }
-    C = Polytope<D, NT>::box(lo, hi);
+    C = &scan_cell<NT>();
+    C->reset_box(lo, hi);
     maxd = C->max_dist2_upper(vi);
     std::sort(cand.begin(), cand.end(), [](const Cand& a, const Cand& b) {
       return a.approx != b.approx ? a.approx < b.approx : a.u < b.u;
     });
     clip_from(0);
   };
-  CertificateRegion region;  // bounds of the vertices of C
+  CertificateRegion& region = buf.region;  // bounds of the vertices of C
+  region.hint = 0;
   unsigned vb_version = ~0u;
   auto meets = [&](const K& s, double d2_lower) {
     std::vector<VertexBounds>& vb = region.vb;
@@ -253,14 +256,15 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
     }
     return meets_certificate_region<NT>(*C, region, v, s, d2_lower);
   };
-  std::vector<Pt> here;  // the visible vertices of a square, sorted
+  std::vector<Pt>& here = buf.here;  // the visible vertices of a square, sorted
   while (!heap.empty()) {
-    const double key = heap.top().key;
-    Leaf& L = *heap.top().leaf;
+    const double key = heap.front().key;
+    Leaf& L = *heap.front().leaf;
     const K& s = L.key;
     if (!nn_fixed && key > best) fix_nn();
     if (nn_fixed && key > limit) break;
-    heap.pop();
+    std::pop_heap(heap.begin(), heap.end(), later);
+    heap.pop_back();
     if (nn_fixed && !(s == start) && !meets(s, key)) continue;
     if (nn_fixed) late.push_back({&L, key});
     else res.read_leaves.push_back(&L);
@@ -280,7 +284,7 @@ auto WellSpacedSet<D>::Impl::clipped_voronoi_tier(const Pt& v, const Time& t) ->
     for (Leaf* n : adjacent_leaves(L))
       if (n->stamp != stamp) {
         n->stamp = stamp;
-        heap.push({box_dist2_lower(v, vabs, n->key), n});
+        push({box_dist2_lower(v, vabs, n->key), n});
       }
   }
   KMR_CHECK(!cand.empty(), "clipped Voronoi scan found no vertex");

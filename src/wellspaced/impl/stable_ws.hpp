@@ -268,7 +268,8 @@ auto WellSpacedSet<D>::Impl::fill_tier(const Pt& v, const CVResult& cv) -> std::
     lo[i] = NT(0) - vn[i];
     hi[i] = NT(1) - vn[i];
   }
-  Polytope<D, NT> P = Polytope<D, NT>::box(lo, hi);  // Vor_CV(v) ∩ [0,1]^D
+  Polytope<D, NT>& P = fill_cell<NT>();  // Vor_CV(v) ∩ [0,1]^D (storage reused across fills)
+  P.reset_box(lo, hi);
   for (const Pt& u : cv.cv) P.clip(bisector_of_origin<D, NT>(rel(u)));
   const NT nn2 = dist2(rel(cv.nn), vq);
   const NT lim = sq<NT>(params.rho) * nn2;

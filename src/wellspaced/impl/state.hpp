@@ -196,6 +196,40 @@ struct WellSpacedSet<D>::Impl {
   };
   template <class NT>
   static bool meets_certificate_region(const Polytope<D, NT>& C, CertificateRegion& R, const Pt& v, const K& s, double d2_lower);
+  // Storage reused by every clipped-Voronoi scan and fill (issue 11 §4: no allocation per call).
+  // Each call starts by clearing what it uses; a call the interval tier abandons (Uncertain)
+  // leaves nothing the next one reads.
+  struct ScanSquare {  // a square to scan, ordered by (lower bound on its distance, key)
+    double key;
+    Leaf* leaf;
+    bool operator>(const ScanSquare& o) const { return key != o.key ? key > o.key : leaf->key > o.leaf->key; }
+  };
+  struct ScanCandidate {
+    double approx;   // |uv|² rounded (the clipping order)
+    IntervalNT d;    // |uv|² enclosed
+    Pt u;
+  };
+  struct ScanBuffers {
+    std::vector<ScanSquare> heap;  // a binary min-heap (std::push_heap/pop_heap)
+    std::vector<ScanCandidate> cand;
+    std::vector<std::pair<Leaf*, double>> late;
+    std::vector<int> cidx;
+    std::vector<Pt> here;
+    CertificateRegion region;
+  };
+  ScanBuffers scan_buffers;
+  Polytope<D, IntervalNT> scan_cell_i, fill_cell_i;  // the scan's C and the fill's cell, per tier
+  Polytope<D, Q> scan_cell_q, fill_cell_q;
+  template <class NT>
+  Polytope<D, NT>& scan_cell() {
+    if constexpr (is_interval_v<NT>) return scan_cell_i;
+    else return scan_cell_q;
+  }
+  template <class NT>
+  Polytope<D, NT>& fill_cell() {
+    if constexpr (is_interval_v<NT>) return fill_cell_i;
+    else return fill_cell_q;
+  }
   template <class NT>
   CVResult clipped_voronoi_tier(const Pt& v, const Time& t);
   template <class NT>
