@@ -84,7 +84,9 @@ class KineticMesh {
   // (kind, rank, canonical vertices…): the certificate's identity, independent of ids and history.
   using Key = std::tuple<int, Rank, int, int, int, int>;
   void recertify();
-  void refresh(const std::string& what, std::size_t events, std::size_t moved);
+  std::size_t classify(const std::vector<const std::pair<const Key, Kept>*>& failed, Updater::Failures& todo,
+                       std::vector<int>& voronoi) const;
+  void refresh(const std::string& what, std::size_t events, std::size_t moved, std::size_t repaired = 0);
   int intern(const InputPoint& p, Rank rank, int ray);
   // The first failing lattice interval of a kept certificate at or after now (relative to now),
   // before horizon T; isolates its roots only when the cached answer does not cover [now, T).
@@ -108,6 +110,7 @@ class KineticMesh {
   std::vector<Batch> batches_;
   std::size_t events_ = 0;
   std::size_t created_ = 0, destroyed_ = 0;
+  std::vector<Key> fresh_failing_;  // certificates built by the last recertify that fail at now
 };
 
 }  // namespace kmr::kmesh
