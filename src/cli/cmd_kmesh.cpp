@@ -193,7 +193,7 @@ int kmesh_command(const Argv& argv) {
     };
     check_now("construction");
     auto after = [&](const Batch& b) {
-      update_stats.push_back(b.moved || b.repaired ? kds.last() : UpdateStats{});
+      update_stats.push_back(b.moved ? kds.last() : UpdateStats{});
       check_now("batch at time " + b.time.to_decimal());
     };
     for (auto& u : updates) {
@@ -295,7 +295,6 @@ int kmesh_command(const Argv& argv) {
         st << ", \"repair\": \"fig4.5\", \"affected\": " << u.affected << ", \"removed\": " << u.removed
            << ", \"converted\": " << u.converted << ", \"ranks\": " << u.ranks << ", \"ops\": " << u.ops
            << ", \"ops_delaunay\": " << u.ops_delaunay;
-        if (u.pairs + u.misplaced > 0) st << ", \"neighbour_pairs\": " << u.pairs << ", \"misplaced\": " << u.misplaced;
       } else {
         st << ", \"repair\": \"rebuild\"";
       }

@@ -93,21 +93,9 @@ std::vector<CertificateSpec> certificate_specs(const Mesh& m, const WitnessChoic
   std::vector<std::size_t> mark(N, 0);
   std::size_t stamp = 0;
   std::vector<int> cousins;
-  // Potential neighbours of x are watched at every rank where x has neighbours and at λ_x − 1, the
-  // rank just below its lowest (top(x) if it has none), from the smaller end of a pair, or from the
-  // larger one when the smaller does not look at that rank (kmesh14: before, a pair whose smaller end
-  // had no list at l was not watched). Below λ_x − 1, x's only cousins are its own kids, within
-  // 2^(l+1) ≤ c·2^l: neighbours, so none.
-  static const std::vector<int> kNone;
-  auto looks_at = [&](int y, Rank l) { return S.all_neighbors(y).count(l) > 0 || l == S.min_rank(y) - 1; };
   for (int x = 0; x < N; ++x) {
     if (x != S.root()) out.push_back({Certificate::ParentChild, x, S.parent(x), S.top(x) + 1, false});
-    std::vector<Rank> ranks;
-    ranks.push_back(S.min_rank(x) - 1);
-    for (auto& [l, list] : S.all_neighbors(x)) ranks.push_back(l);
-    for (Rank l : ranks) {
-      auto found = S.all_neighbors(x).find(l);
-      const std::vector<int>& list = found == S.all_neighbors(x).end() ? kNone : found->second;
+    for (auto& [l, list] : S.all_neighbors(x)) {
       for (int y : list)
         if (y > x) {
           out.push_back({Certificate::Separation, x, y, l, true});
@@ -119,7 +107,7 @@ std::vector<CertificateSpec> certificate_specs(const Mesh& m, const WitnessChoic
       ++stamp;
       cousins.clear();
       auto add = [&](int y) {
-        if (y != x && (y > x || !looks_at(y, l)) && mark[y] != stamp) mark[y] = stamp, cousins.push_back(y);
+        if (y > x && mark[y] != stamp) mark[y] = stamp, cousins.push_back(y);
       };
       add(r);
       for (int y : S.kids(r, l)) add(y);

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <limits>
 #include <set>
-#include <tuple>
-#include <vector>
 
 #include "exact/error.hpp"
 #include "poly/sturm.hpp"
@@ -126,7 +124,6 @@ void KineticMesh::recertify() {
     KMR_CHECK(keys[i - 1].first != keys[i].first, "recertify: two certificates with one canonical name");
 
   created_ = destroyed_ = 0;
-  fresh_failing_.clear();
   std::vector<std::pair<Key, std::size_t>> fresh[2];  // new names: of mesh_, of S_N
   auto it = certs_.begin();
   for (auto& [key, i] : keys) {
@@ -154,7 +151,6 @@ void KineticMesh::recertify() {
     for (std::size_t f = 0; f < todo.size(); ++f) {
       const Key& key = fresh[sn][f].first;
       Kept k{std::move(built[f]), cv[todo[f].a], cv[todo[f].b], sn == 1, std::nullopt, now(), now()};
-      if (!holds_at(k.cert, now())) fresh_failing_.push_back(key);
       if (k.cert.value.degree() > 0) pending_.insert({now(), key});
       certs_.emplace(key, std::move(k));
       ++created_;
@@ -168,8 +164,6 @@ void KineticMesh::recertify() {
        w != certs_.end() && std::get<0>(w->first) == Certificate::BallNotEmpty; ++w)
     witness_.emplace_hint(witness_.end(), std::tuple{std::get<2>(w->first), std::get<3>(w->first), std::get<1>(w->first)},
                           std::get<4>(w->first));
-  // The Updater's witnesses are the watched ones (U3 while points move: Updater::repair).
-  for (auto& [sat, w] : witness_) upd_.adopt_witness(std::get<2>(sat), mesh_id_of_[std::get<0>(sat)], std::get<1>(sat), mesh_id_of_[w]);
 }
 
 void KineticMesh::unqueue(const Key& key, const Kept& k) {
@@ -187,24 +181,6 @@ void KineticMesh::isolate(const Key& key, Kept& k, const Dyadic& T) {
   Dyadic to = std::max(T, from + Dyadic(16) * Dyadic(1, -bits_));
   poly::LatticeRootSolver s(k.cert.value, bits_);
   k.fail = s.next_failure_after(from, to);
-  // A certificate tight at now (value 0) whose root there has even multiplicity changes no sign,
-  // yet fails just after now (a witness exactly on its ball's boundary, moving out): it fails in
-  // the interval that starts at now. (The lattice semantics of poly/sturm.hpp read the sign before
-  // now, where this polynomial is negative too.)
-  if (from == now() && poly::sign_after(k.cert.value, now()) < 0) {
-    const Dyadic at = now().shifted(bits_);
-    if (at.is_integer()) k.fail = at.mantissa() << static_cast<unsigned>(at.exponent());
-  }
-  // A root of even multiplicity exactly at a lattice point kδ (a tangency) changes no sign either, but
-  // a certificate that does not hold at kδ (strict, touching there) must be repaired by the batch
-  // ending at kδ: it fails in interval k − 1.
-  for (const auto& iv : s.isolate(from, k.fail ? Dyadic(*k.fail, -bits_) : to)) {
-    const Dyadic at(iv.k, -bits_);
-    if (!iv.sign_change && at > now() && at > from && !holds_at(k.cert, at)) {
-      k.fail = iv.k - 1;
-      break;
-    }
-  }
   k.searched_to = to;
   if (k.fail) queue_.insert({*k.fail, key});
   else pending_.insert({to, key});
@@ -244,13 +220,7 @@ KineticMesh::next_failures(const Dyadic& T) {
   }
   if (queue_.empty() || !(Dyadic(queue_.begin()->first, -bits_) < T)) return std::nullopt;
   const exact::Integer K = queue_.begin()->first;
-  auto it = queue_.begin();
-  for (; it != queue_.end() && it->first == K; ++it) failed.push_back(&*certs_.find(it->second));
-  // The repair time (K+1)δ belongs to the next interval, but a certificate whose root is exactly there
-  // and that does not hold there (a pair at exactly c·2^ℓ, a strict certificate) is repaired now too.
-  const Dyadic t(K + 1, -bits_);
-  for (; it != queue_.end() && it->first == K + 1; ++it)
-    if (const auto& e = *certs_.find(it->second); !holds_at(e.second.cert, t)) failed.push_back(&e);
+  for (auto it = queue_.begin(); it != queue_.end() && it->first == K; ++it) failed.push_back(&*certs_.find(it->second));
   return std::pair{K - k0, failed};
 }
 
@@ -283,61 +253,18 @@ std::vector<Certificate> KineticMesh::recomputed_certificates() const {
   return out;
 }
 
-void KineticMesh::refresh(const std::string& what, std::size_t events, std::size_t moved, std::size_t repaired) {
+void KineticMesh::refresh(const std::string& what, std::size_t events, std::size_t moved) {
   auto before = steiner_positions(mesh_, now() - mesh_time_);
   recertify();
   auto after = steiner_positions(mesh_, Dyadic(0));
   std::size_t kept = 0;
   for (auto& p : before) kept += after.count(p);
   Batch b{now(), events, what, mesh_.size(), kept, before.size()};
-  if (moved > 0 || repaired > 0) b.ops = upd_.last().ops, b.affected = upd_.last().affected;
+  if (moved > 0) b.ops = upd_.last().ops, b.affected = upd_.last().affected;
   b.moved = moved;
-  b.repaired = repaired;
   b.certs_created = created_;
   b.certs_destroyed = destroyed_;
   batches_.push_back(b);
-}
-
-// Each failed certificate is repaired where it failed (Updater::repair): the spanners' kinds by the
-// spanner's own repair (§4.1.2), the ball kinds by their satellite in F_ℓ (Fig. 4.5). Delaunay
-// failures change no vertex of M: their vertices' stars are repaired (Updater::voronoi_repair, at the
-// next mesh()). Ids are those of mesh_ (an end of an S_N certificate is an input vertex). Returns the
-// number of non-Delaunay certificates listed in `todo`.
-std::size_t KineticMesh::classify(const std::vector<const std::pair<const Key, Kept>*>& failed, Updater::Failures& todo,
-                                  std::vector<int>& voronoi) const {
-  std::size_t n = 0;
-  for (const auto* f : failed) {
-    const Kept& c = f->second;
-    auto [kind, form, a, b, x, y] = f->first;
-    if (c.cert.kind == Certificate::Delaunay) {  // a triangle (a, b, x) or an edge (a, b) with apexes x, y
-      for (int cv : {a, b, x, y})
-        if (cv >= 0) voronoi.push_back(mesh_id_of_[cv]);
-      continue;
-    }
-    ++n;
-    const int ea = mesh_id_of_[c.end_a], eb = mesh_id_of_[c.end_b];
-    switch (c.cert.kind) {
-      case Certificate::Edge:
-      case Certificate::Potential:
-        (c.input_spanner ? todo.sn_pairs : todo.pairs).push_back({ea, eb, c.cert.rank});
-        break;
-      case Certificate::ParentChild:  // the child (end a) is re-placed
-        (c.input_spanner ? todo.sn_misplaced : todo.misplaced).push_back(ea);
-        break;
-      case Certificate::Separation:
-        for (int e : {ea, eb}) (c.input_spanner ? todo.sn_misplaced : todo.misplaced).push_back(e);
-        break;
-      case Certificate::BallEmpty:  // end a: the converted satellite
-        todo.satellites.push_back({mesh_.info[ea].rank, mesh_.info[ea].nucleus, mesh_.info[ea].ray});
-        break;
-      case Certificate::BallNotEmpty:  // end a: the nucleus; the ray is in the name
-        todo.satellites.push_back({c.cert.rank, ea, b});
-        break;
-      default:
-        break;
-    }
-  }
-  return n;
 }
 
 void KineticMesh::run_until(const Dyadic& T, const std::function<void(const Batch&)>& after) {
@@ -349,35 +276,30 @@ void KineticMesh::run_until(const Dyadic& T, const std::function<void(const Batc
       recertify();
       break;
     }
-    auto& [k, failed] = *nb;
-    Updater::Failures todo;
+    // The nuclei of the vertices of the failed certificates (ids of mesh_; an end of an S_N
+    // certificate is an input vertex, its own nucleus). Delaunay failures change no vertex of M:
+    // their vertices' stars are repaired (Updater::voronoi_repair, at the next mesh()).
+    std::set<int> nuclei;
     std::vector<int> voronoi;
-    std::size_t repaired = classify(failed, todo, voronoi);
+    auto& [k, failed] = *nb;
+    for (const auto* f : failed) {
+      const Kept& c = f->second;
+      if (c.cert.kind == Certificate::Delaunay) {
+        auto [kind, form, a, b, x, y] = f->first;  // a triangle (a, b, x) or an edge (a, b) with apexes x, y
+        for (int cv : {a, b, x, y})
+          if (cv >= 0) voronoi.push_back(mesh_id_of_[cv]);
+        continue;
+      }
+      nuclei.insert(mesh_.info[mesh_id_of_[c.end_a]].nucleus);
+      nuclei.insert(mesh_.info[mesh_id_of_[c.end_b]].nucleus);
+    }
+    std::vector<InputPoint> moved;
+    for (int v : nuclei) moved.push_back(mesh_.input[v]);
     upd_.voronoi_certificates_failed(voronoi);
     upd_.advance_to(now() + Dyadic(k + 1, -bits_));
-    if (repaired > 0) upd_.repair(todo);
+    if (!moved.empty()) upd_.relocate(moved);
     events_ += failed.size();
-    refresh("events", failed.size(), 0, repaired);
-    // A certificate new after the repair that does not hold at now (a pair that became cousins at
-    // exactly c·2^ℓ, or across c·2^ℓ within the interval) is repaired at once, at the same time.
-    for (int round = 0; !fresh_failing_.empty(); ++round) {
-      KMR_CHECK(round < 16, "kinetic repair: new certificates keep failing at the repair time");
-      std::vector<const std::pair<const Key, Kept>*> again;
-      for (const Key& key : fresh_failing_) again.push_back(&*certs_.find(key));
-      Updater::Failures more;
-      std::vector<int> v;
-      std::size_t r = classify(again, more, v);
-      upd_.voronoi_certificates_failed(v);
-      upd_.repair(more);
-      Batch& b = batches_.back();
-      b.ops += upd_.last().ops;
-      b.affected += upd_.last().affected;
-      b.repaired += r;
-      recertify();
-      b.certs_created += created_;
-      b.certs_destroyed += destroyed_;
-      b.vertices = mesh_.size();
-    }
+    refresh("events", failed.size(), moved.size());
     if (after) after(batches_.back());
   }
 }

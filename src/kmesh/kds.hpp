@@ -3,9 +3,9 @@
 // and over the input alone, ball-empty / ball-not-empty of every conversion decision, the Delaunay
 // certificates; kmesh/certificates.hpp) are advanced lattice interval by lattice interval
 // (δ = 2^−bits); the certificates failing in one interval form a batch, repaired at the end of the
-// interval by the update of Fig. 4.5 (kmesh/update.hpp, Updater::repair) instead of a rebuild: each
-// failed certificate is repaired where it failed — the spanner's kinds by the spanner's kinetic
-// repair (§4.1.2), the ball kinds by their satellite in F_ℓ, the change propagating over the ranks. Dynamic insertions and deletions of
+// interval by the update of Fig. 4.5 (kmesh/update.hpp, Updater::relocate) instead of a rebuild:
+// the nuclei of the vertices of the failed certificates leave with their satellites and come back at
+// their new positions, the change propagating over the ranks. Dynamic insertions and deletions of
 // moving points go through the same Updater at their time. The rebuild KDS
 // (kmesh/rebuild_simulation.hpp) is the reference it is compared with.
 //
@@ -24,8 +24,9 @@
 //    recomputation (certificates(mesh()) and S_N's) after every batch and update, except that a
 //    ball-not-empty certificate keeps its witness while it stays a vertex of rank ≤ ℓ in the ball
 //    (the recomputation takes the nearest vertex at now) — tested in kds_test.cpp.
-// Deviations (spec/kmesh.md): a failed parent-child or separation certificate re-places its vertex
-// in the hierarchy (detach and insert) instead of GGN's promotion/demotion; the Delaunay stage is local (the vertices of the failed Delaunay certificates are
+// Deviations (spec/kmesh.md): F_ℓ of a kinetic batch is every satellite of the nuclei involved
+// (not only the satellites of the failed certificates), so the work per event is O(log Δ) times the
+// affected nuclei; the Delaunay stage is local (the vertices of the failed Delaunay certificates are
 // reported to the Updater, whose voronoi_repair recomputes their stars and their neighbours'); the
 // renumbering and the enumeration of the certificates' names are still global after a batch
 // (O(|M|), integer work; counted apart from the local operations of Fig. 4.5); building
@@ -83,9 +84,7 @@ class KineticMesh {
   // (kind, rank, canonical vertices…): the certificate's identity, independent of ids and history.
   using Key = std::tuple<int, Rank, int, int, int, int>;
   void recertify();
-  std::size_t classify(const std::vector<const std::pair<const Key, Kept>*>& failed, Updater::Failures& todo,
-                       std::vector<int>& voronoi) const;
-  void refresh(const std::string& what, std::size_t events, std::size_t moved, std::size_t repaired = 0);
+  void refresh(const std::string& what, std::size_t events, std::size_t moved);
   int intern(const InputPoint& p, Rank rank, int ray);
   // The first failing lattice interval of a kept certificate at or after now (relative to now),
   // before horizon T; isolates its roots only when the cached answer does not cover [now, T).
@@ -109,7 +108,6 @@ class KineticMesh {
   std::vector<Batch> batches_;
   std::size_t events_ = 0;
   std::size_t created_ = 0, destroyed_ = 0;
-  std::vector<Key> fresh_failing_;  // certificates built by the last recertify that fail at now
 };
 
 }  // namespace kmr::kmesh

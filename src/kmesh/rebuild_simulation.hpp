@@ -27,7 +27,6 @@ struct Batch {
   std::size_t vertices = 0, steiner_kept = 0, steiner_before = 0;  // |M| after; Steiner positions kept
   std::uint64_t ops = 0;   // kinetic KDS (kmesh/kds.hpp): Fig. 4.5's local operations for the batch
   std::size_t affected = 0, moved = 0;  // satellites taken from the F_ℓ; nuclei relocated
-  std::size_t repaired = 0;  // kinetic KDS: failed spanner and ball certificates repaired (Updater::repair)
   std::size_t certs_created = 0, certs_destroyed = 0;  // kinetic KDS: certificates built / dropped
 };
 

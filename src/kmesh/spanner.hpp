@@ -33,8 +33,6 @@
 //  * relocate(X, positions): the kinetic repair of a batch: the vertices X (the ends of the failed
 //    certificates) are detached together, the orphans repaired, and X re-inserted at the new
 //    positions, in id order. It assumes the certificates among the other vertices still hold.
-//  * repair_neighbor_pair(x, y, ℓ): the kinetic repair of a failed edge or potential-neighbour
-//    certificate in place (no vertex moves between lists other than neighbour lists).
 // Removed vertices keep their id (alive(x) is false) so that ids stay stable.
 #include <cstdint>
 #include <map>
@@ -91,12 +89,6 @@ class Spanner {
   int insert_point(const Point2& p, int reuse = -1);  // reuse: a dead id to give it
   void remove(int x);
   void relocate(const std::vector<int>& xs, const std::vector<Point2>& positions);
-  // The neighbour repair of §4.1.2 (Gao–Guibas–Nguyen) after an edge or potential-neighbour
-  // certificate of the ℓ-centers x, y failed: y ∈ neighbors(x, ℓ) is made to say |xy| ≤ c·2^ℓ at the
-  // current positions, and a new pair's children are linked at ℓ−1, ℓ−2, … as they come within
-  // c·2^rank. It assumes every other certificate holds (S1, S2 and S3 elsewhere). Returns the pairs
-  // added or removed.
-  std::size_t repair_neighbor_pair(int x, int y, Rank l);
   // Vertices whose neighbour lists changed since the caller last cleared it (for activation ranks).
   std::vector<int> touched;
   // The same spanner over the live vertices renumbered by new_id (−1 for a dead vertex).

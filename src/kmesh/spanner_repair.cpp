@@ -200,52 +200,6 @@ Spanner Spanner::compacted(const std::vector<int>& new_id) const {
 
 void Spanner::remove(int x) { repair_orphans(detach({x})); }
 
-// An edge certificate fails: x, y are more than c·2^ℓ apart and leave each other's ℓ-list; no pair
-// below goes with them (children u, v at ℓ−1 within c·2^(ℓ−1) would put x, y within
-// (c/2 + 2)·2^ℓ ≤ c·2^ℓ: such a pair's own edge certificate failed too). A potential-neighbour
-// certificate fails: x, y join each other's ℓ-list; every new pair at ℓ−1 has its rank-ℓ
-// representatives among them ((ℓ−1)-neighbours have ℓ-neighbour representatives, the same bound), so
-// the children of x and of y (each itself, and its kids at ℓ−1) are repaired at ℓ−1, recursively.
-// The test is the current distance, not the failure: a pair that crossed c·2^ℓ twice in one lattice
-// interval is left as it is.
-std::size_t Spanner::repair_neighbor_pair(int x, int y, Rank l) {
-  KMR_CHECK(x != y && nodes_[x].alive && nodes_[y].alive && nodes_[x].top >= l && nodes_[y].top >= l,
-            "repair_neighbor_pair: not two live l-centers");
-  ++ops;
-  const bool near = within_filtered(nodes_[x].p, nodes_[x].e, nodes_[y].p, nodes_[y].e, kC, l);
-  auto it = nodes_[x].nbrs.find(l);
-  const bool listed = it != nodes_[x].nbrs.end() && std::binary_search(it->second.begin(), it->second.end(), y);
-  if (near == listed) return 0;
-  if (!near) {
-    for (auto [a, b] : {std::pair{x, y}, std::pair{y, x}}) {
-      auto& la = nodes_[a].nbrs[l];
-      sorted_erase(la, b);
-      if (la.empty()) nodes_[a].nbrs.erase(l);
-      touched.push_back(a);
-    }
-    return 1;
-  }
-  add_neighbor_pair(x, y, l);
-  std::size_t changed = 1;
-  auto children = [&](int z) {
-    std::vector<int> c{z};
-    auto k = nodes_[z].kids.find(l - 1);
-    if (k != nodes_[z].kids.end()) c.insert(c.end(), k->second.begin(), k->second.end());
-    return c;
-  };
-  const std::vector<int> cx = children(x), cy = children(y);
-  for (int u : cx)
-    for (int v : cy) {
-      ++ops;
-      if (u == v) continue;
-      auto lu = nodes_[u].nbrs.find(l - 1);
-      if (lu != nodes_[u].nbrs.end() && std::binary_search(lu->second.begin(), lu->second.end(), v)) continue;
-      if (within_filtered(nodes_[u].p, nodes_[u].e, nodes_[v].p, nodes_[v].e, kC, l - 1))
-        changed += repair_neighbor_pair(u, v, l - 1);
-    }
-  return changed;
-}
-
 void Spanner::relocate(const std::vector<int>& xs, const std::vector<Point2>& positions) {
   KMR_CHECK(xs.size() == positions.size(), "relocate: one position per vertex");
   std::vector<std::pair<int, Point2>> order;

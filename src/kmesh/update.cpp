@@ -408,49 +408,6 @@ void Updater::relocate(const std::vector<InputPoint>& moved) {
   finish(ops0);
 }
 
-void Updater::repair(const Failures& f) {
-  last_ = UpdateStats{};
-  focus_.clear();
-  std::uint64_t ops0 = S_.ops + SN_.ops;
-  auto s_id = [&](int mesh_id) { return s_id_of_mesh_.at(mesh_id); };
-  auto sn_id = [&](int mesh_id) { return inputs_.at(info_.at(s_id(mesh_id)).nucleus).sn; };
-  // The two spanners (§4.1.2): neighbour pairs in place, then the misplaced vertices re-placed.
-  auto fix = [&](Spanner& S, const std::vector<std::tuple<int, int, Rank>>& pairs, const std::vector<int>& misplaced,
-                 auto id) {
-    for (auto [a, b, l] : pairs) last_.pairs += S.repair_neighbor_pair(id(a), id(b), l);
-    std::set<int> xs;
-    for (int x : misplaced) xs.insert(id(x));
-    std::vector<int> ids(xs.begin(), xs.end());
-    std::vector<Point2> at;
-    for (int x : ids) at.push_back(S.position(x));
-    if (!ids.empty()) S.relocate(ids, at);
-    last_.misplaced += ids.size();
-  };
-  SN_.touched.clear();
-  fix(S_, f.pairs, f.misplaced, s_id);
-  fix(SN_, f.sn_pairs, f.sn_misplaced, sn_id);
-  refresh_rhos(SN_.touched);
-  recompute_highest();
-  // Fig. 4.5 from the failed ball certificates: their satellites are re-decided at their rank.
-  for (auto [l, nucleus, ray] : f.satellites) {
-    int v = info_.at(s_id(nucleus)).nucleus;
-    affect(Key{l, v, ray});
-    focus_.push_back(sat_position(v, ray, l));
-  }
-  propagate();
-  finish(ops0);
-}
-
-void Updater::adopt_witness(Rank l, int nucleus, int ray, int witness) {
-  const Key k{l, info_.at(s_id_of_mesh_.at(nucleus)).nucleus, ray};
-  auto it = sats_.find(k);
-  KMR_CHECK(it != sats_.end() && !it->second.converted, "adopt_witness: not a satellite left unconverted");
-  const int w = s_id_of_mesh_.at(witness);
-  if (it->second.witness == w) return;
-  drop_witness(k);
-  set_witness(k, w);
-}
-
 void Updater::advance_to(const Dyadic& t) {
   KMR_CHECK(t >= now_, "advance_to: time runs backwards");
   if (t == now_) return;

@@ -63,7 +63,6 @@ struct UpdateStats {
   static constexpr Rank kNoReach = std::numeric_limits<Rank>::min();
   Rank reach = kNoReach;
   std::uint64_t ops_remove = 0;  // L4.3.6: spanner operations of the Remove calls (S.remove)
-  std::size_t pairs = 0, misplaced = 0;  // repair(): neighbour pairs changed, vertices re-placed in S and S_N
 };
 
 class Updater {
@@ -81,25 +80,6 @@ class Updater {
   // for all of them, then one propagation over the ranks), then come back one by one at their
   // positions at now() (Fig. 4.5 insertions). Every certificate not about them must hold at now().
   void relocate(const std::vector<InputPoint>& moved);
-  // A kinetic batch repaired per failed certificate (§4.1.2 and Fig. 4.5 with F_ℓ taken from the
-  // failures, kmesh/kds.hpp), at now(); vertices are ids of the last mesh(). The spanners first: a
-  // failed edge or potential-neighbour certificate (x, y, ℓ) is repaired in place
-  // (Spanner::repair_neighbor_pair), the child of a failed parent-child certificate and both ends of a
-  // failed separation certificate are taken out of the hierarchy and put back at their positions
-  // (Spanner::relocate of those vertices only: the vertex stays in M). Then the activation ranks
-  // whose S_N lists changed and the satellites of the failed ball certificates go into F_ℓ, and one
-  // propagation over the ranks re-decides them (Remove / Convert). Every certificate not listed must
-  // hold at now().
-  struct Failures {
-    std::vector<std::tuple<int, int, Rank>> pairs, sn_pairs;  // edge / potential-neighbour: (x, y, ℓ)
-    std::vector<int> misplaced, sn_misplaced;                  // parent-child, separation
-    std::vector<std::tuple<Rank, int, int>> satellites;       // ball certificates: (ℓ, nucleus, ray)
-  };
-  void repair(const Failures& f);
-  // The witness of the satellite (ℓ, nucleus, ray) not converted is `witness` (ids of the last
-  // mesh()): the one its ball-not-empty certificate watches (kmesh/kds.hpp), so that U3 is watched
-  // while points move and a witness leaving the ball puts its satellite in F_ℓ (repair).
-  void adopt_witness(Rank l, int nucleus, int ray, int witness);
   // Every vertex moves like its nucleus to its position at time t (≥ now()); nothing else changes
   // (the structure stays valid while the certificates hold: L4.3.1).
   void advance_to(const Dyadic& t);

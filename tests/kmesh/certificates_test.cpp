@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <random>
-#include <set>
 #include <tuple>
 
 #include "kmesh/certificates.hpp"
@@ -84,7 +83,7 @@ TEST(Certificates, L4_3_1_HoldAtZeroAndCertifyUntilTheFirstFailure) {
 // certificate_specs (kmesh12: stamps and sorted lists instead of per-vertex sets) against a
 // brute-force enumeration sharing none of its loops: potential-neighbour pairs from the parent
 // pointers (y is a cousin of x at ℓ iff rep(y, ℓ+1) — y itself, or its parent when top(y) = ℓ — is
-// rep(x, ℓ+1) or an (ℓ+1)-neighbour of it), at every rank either end looks at (kmesh14), ball-empty pairs from the distances
+// r = rep(x, ℓ+1) or an (ℓ+1)-neighbour of r), ball-empty pairs from the distances
 // (|s v| ≤ c·2^ℓ′ at the highest ℓ′ ∈ [ℓ−6, ℓ−1] where both are centers). Compared as multisets of
 // (kind, a, b, rank) on constructed meshes and on an updated one.
 TEST(Certificates, SpecsEqualABruteForceEnumeration) {
@@ -94,33 +93,16 @@ TEST(Certificates, SpecsEqualABruteForceEnumeration) {
     const Spanner& S = m.spanner;
     const int N = static_cast<int>(m.size());
     std::vector<Row> out;
-    // The ranks a vertex looks at (kmesh14): those of its non-empty lists, and the one just below the
-    // lowest (its top if it has none). A pair is named from its smaller end if that one looks at ℓ.
-    auto looks = [&](int z) {
-      std::set<Rank> r;
-      Rank lowest = S.top(z) + 1;
-      for (auto& [l, list] : S.all_neighbors(z))
-        if (!list.empty()) r.insert(l), lowest = std::min(lowest, l);
-      r.insert(lowest - 1);
-      return r;
-    };
-    std::vector<std::set<Rank>> look(N);
-    for (int z = 0; z < N; ++z) look[z] = looks(z);
-    auto rep_up = [&](int z, Rank l) { return S.top(z) >= l ? z : S.parent(z); };  // l ≤ top(z) + 1
-    auto neighbours = [&](int a, int b, Rank l) {
-      const std::vector<int>& la = S.neighbors(a, l);
-      return std::find(la.begin(), la.end(), b) != la.end();
-    };
     for (int x = 0; x < N; ++x)
-      for (int y = x + 1; y < N; ++y) {
-        std::set<Rank> ranks = look[x];
-        ranks.insert(look[y].begin(), look[y].end());
-        for (Rank l : ranks) {
-          if (l >= S.top_rank() || S.top(x) < l || S.top(y) < l || neighbours(x, y, l)) continue;
-          const int rx = rep_up(x, l + 1), ry = rep_up(y, l + 1);
-          if (rx != ry && !neighbours(rx, ry, l + 1)) continue;
-          if (look[x].count(l)) out.push_back({K::Potential, x, y, l});
-          else out.push_back({K::Potential, y, x, l});
+      for (auto& [l, list] : S.all_neighbors(x)) {
+        if (l >= S.top_rank()) continue;
+        const int r = S.rep(x, l + 1);
+        const std::vector<int>& rn = S.neighbors(r, l + 1);
+        auto in_family = [&](int z) { return z == r || std::find(rn.begin(), rn.end(), z) != rn.end(); };
+        for (int y = x + 1; y < N; ++y) {
+          if (S.top(y) < l || std::find(list.begin(), list.end(), y) != list.end()) continue;
+          const int ry = S.top(y) >= l + 1 ? y : S.parent(y);
+          if (in_family(ry)) out.push_back({K::Potential, x, y, l});
         }
       }
     for (const Considered& c : m.considered) {

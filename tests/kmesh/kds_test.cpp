@@ -52,12 +52,12 @@ TEST(KineticMesh, L4_3_1_EveryKineticBatchRepairedByFig45IsCertifiedAndValid) {
     EXPECT_GT(b.time, last);
     last = b.time;
     EXPECT_GT(b.events, 0u);
-    relocating += b.repaired > 0;
+    relocating += b.moved > 0;
     stab += check_batch(k);
   });
   EXPECT_EQ(k.now(), Dyadic(1, -1));
   EXPECT_GE(batches, 1);
-  EXPECT_GE(relocating, 1);  // some batch went through Updater::repair
+  EXPECT_GE(relocating, 1);  // some batch went through Updater::relocate
   std::cout << "batches " << batches << " (relocating " << relocating << "), mean stability "
             << stab / std::max(batches, 1) << "\n";
   check_batch(k);
@@ -181,7 +181,7 @@ FlipCount compare_every_batch(KineticMesh& k, const Dyadic& T) {
     ++fc.batches;
     EXPECT_EQ(local_vs_from_scratch(k), "") << "batch at " << b.time.to_decimal();
     auto before = triangle_positions(moved_to(prev, k.now() - prev_t)), after = triangle_positions(k.mesh());
-    if (b.repaired == 0 && before != after && fc.pure_flips++ == 0) {
+    if (b.moved == 0 && before != after && fc.pure_flips++ == 0) {
       fc.first_pure = b.time;
       std::vector<std::array<std::pair<Dyadic, Dyadic>, 3>> diff;
       std::set_symmetric_difference(before.begin(), before.end(), after.begin(), after.end(), std::back_inserter(diff));
@@ -202,7 +202,7 @@ TEST(KineticMesh, L4_3_1_LocalDelaunayRepairEqualsTheFromScratchTriangulation) {
   // A pure Delaunay flip: the nucleus (64, 0) slides up past the nucleus (0, 0) at speed 1/8 per
   // lattice step; their orbits' satellites face each other across the gap, and as it moves the
   // in-circle test of the quadrilaterals between the two orbit families changes sign at lattice
-  // times where no spanner or ball certificate fails (no vertex moves: b.repaired = 0).
+  // times where no spanner or ball certificate fails (no vertex moves: b.moved = 0).
   {
     KineticMesh k({mv(0, 0), mv(64, -8, 0, 1)}, 3);
     EXPECT_EQ(local_vs_from_scratch(k), "");
