@@ -70,10 +70,12 @@ class KeyTable {
   bool contains(const K& k) const { return find(k) != nullptr; }
   // Room for n entries without growth (the capacity only grows; no entry moves afterwards until
   // the table holds more than n).
-  void reserve(std::size_t n) {  // one allocation of the final size (not one per doubling)
-    std::size_t size = slots_.empty() ? 16 : slots_.size();
-    while (2 * n > size) size *= 2;
-    if (size > slots_.size()) rehash(size);
+  // One allocation of the final size (not one per doubling); an empty table gets its 16 slots.
+  void reserve(std::size_t n) {
+    KMR_CHECK(n <= (std::size_t{1} << 31), "KeyTable: more than 2^31 entries");
+    std::size_t slots = slots_.empty() ? 16 : slots_.size();
+    while (2 * n > slots) slots *= 2;
+    if (slots > slots_.size()) rehash(slots);
   }
   std::size_t capacity() const { return slots_.size() / 2; }  // entries that fit without growth
 

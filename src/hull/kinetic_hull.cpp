@@ -318,13 +318,8 @@ void KineticHull::start() {
   run();
 }
 
-void KineticHull::refresh_machine_points(int x) {
-  if (x < 0) {
-    machine_.clear();
-    for (const MovingPoint& p : pts_) machine_.push_back(machine_point(p));
-  } else {
-    machine_[static_cast<std::size_t>(x)] = machine_point(pts_[static_cast<std::size_t>(x)]);
-  }
+void KineticHull::refresh_machine_point(int x) {
+  machine_[static_cast<std::size_t>(x)] = machine_point(pts_[static_cast<std::size_t>(x)]);
   refresh_machine_centre();
 }
 
@@ -434,14 +429,15 @@ void KineticHull::change_motion(int x, MovingPoint r) {
   auto restore = [&] {
     pts_[x] = old;
     centre_sum_ = old_sum;
-    refresh_machine_points(x);
+    refresh_machine_point(x);
   };
   std::vector<int> live_order;
   for (int y : order_)
     if (present_[y]) live_order.push_back(y);
   std::array<int, 4> after;
+  machine_[static_cast<std::size_t>(x)] = machine_point(pts_[static_cast<std::size_t>(x)]);  // restore() refreshes it back
   try {
-    after = initial_simplex_of(pts_, live_order);
+    after = initial_simplex_of(pts_, live_order, machine_);
   } catch (const InputError&) {
     restore();
     throw;
@@ -455,7 +451,7 @@ void KineticHull::change_motion(int x, MovingPoint r) {
   }
   const bool centre = std::count(before.begin(), before.end(), x) > 0;
   if (centre) centre_sum_ = trajectory_sum(pts_[before[0]], pts_[before[1]], pts_[before[2]], pts_[before[3]]);
-  refresh_machine_points(x);
+  refresh_machine_point(x);
   if (!by_point_built_) build_point_index();
   std::vector<CertificateKey> affected;
   if (centre)

@@ -149,9 +149,8 @@ class KineticHull {
   };
   CertificatePolynomial polynomial(Test test, int a, int b, int c, int d) const;
   int sign_before_t(const CertificatePolynomial& p) const;  // outcome in a from-scratch reference run
-  // The machine forms of point x (all points when x < 0), the centre sum's and t_'s lattice form
-  // (t_lattice_ is used by from-scratch references only, whose t_ never changes).
-  void refresh_machine_points(int x = -1);
+  // The machine form of point x, then refresh_machine_centre (start() fills machine_ for all points).
+  void refresh_machine_point(int x);
   void refresh_machine_centre();  // machine_centre_ and t_lattice_ from machine_, simplex_ and t_
   std::string describe(Test test, int a, int b, int c, int d) const;
 

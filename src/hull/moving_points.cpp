@@ -1,6 +1,7 @@
 #include "hull/moving_points.hpp"
 
 #include <algorithm>
+#include <initializer_list>
 #include <numeric>
 #include <sstream>
 
@@ -195,33 +196,34 @@ void refuse_identical_trajectories(const std::vector<MovingPoint>& points) {
 }
 
 namespace {
-// (q − p) × (r − p) ≡ 0 as polynomials in t, for machine points: each component is a quadratic
-// whose coefficients are sums of two products of entries ≤ 2^37 (|·| < 2^76: exact in __int128).
+// (q − p) × (r − p) ≡ 0 as polynomials in t, for machine points (entries of the differences
+// ≤ 2^37, within cross's bound): u × w = ux×wx + (ux×wv + uv×wx)·t + uv×wv·t².
 bool machine_collinear(const MachinePoint& p, const MachinePoint& q, const MachinePoint& r) {
   const MachinePoint u = difference(q, p), w = difference(r, p);
-  using I = __int128;
-  for (int k = 0; k < 3; ++k) {
-    const int i = (k + 1) % 3, j = (k + 2) % 3;  // component k of u × w: u_i w_j − u_j w_i
-    const I c0 = I(u.x[i]) * w.x[j] - I(u.x[j]) * w.x[i];
-    const I c1 = I(u.x[i]) * w.v[j] + I(u.v[i]) * w.x[j] - I(u.x[j]) * w.v[i] - I(u.v[j]) * w.x[i];
-    const I c2 = I(u.v[i]) * w.v[j] - I(u.v[j]) * w.v[i];
-    if (c0 != 0 || c1 != 0 || c2 != 0) return false;
-  }
+  const I3 c0 = cross(u.x, w.x), c1a = cross(u.x, w.v), c1b = cross(u.v, w.x), c2 = cross(u.v, w.v);
+  for (int k = 0; k < 3; ++k)
+    if (c0[k] != 0 || c1a[k] + c1b[k] != 0 || c2[k] != 0) return false;
   return true;
 }
-}  // namespace
 
-std::array<int, 4> initial_simplex_of(const std::vector<MovingPoint>& pts, const std::vector<int>& order) {
-  return initial_simplex_of(pts, order, std::vector<std::optional<MachinePoint>>(pts.size()));
-}
-
-std::array<int, 4> initial_simplex_of(const std::vector<MovingPoint>& pts, const std::vector<int>& order,
-                                      const std::vector<std::optional<MachinePoint>>& machine) {
+// §2.2: the first point in `order`, the next not identically equal (all trajectories differ), the
+// next not identically collinear with them, the next not identically coplanar; each test in
+// machine form when its points have one (machine == nullptr: Polynomial tests only).
+std::array<int, 4> choose_initial_simplex(const std::vector<MovingPoint>& pts, const std::vector<int>& order,
+                                          const std::vector<std::optional<MachinePoint>>* machine) {
   const std::size_t n = order.size();
   if (n < 4) throw InputError("fewer than four points: a 3D hull needs four affinely independent points");
+  KMR_CHECK(!machine || machine->size() == pts.size(), "initial_simplex_of: one machine form per point");
+  auto in_machine_form = [&](std::initializer_list<int> xs) {
+    if (!machine) return false;
+    for (int x : xs)
+      if (!(*machine)[static_cast<std::size_t>(x)]) return false;
+    return true;
+  };
+  auto m = [&](int x) -> const MachinePoint& { return *(*machine)[static_cast<std::size_t>(x)]; };
   const int a = order[0], b = order[1];  // trajectories are distinct (refused otherwise)
   auto collinear = [&](int x) {
-    if (machine[a] && machine[b] && machine[x]) return machine_collinear(*machine[a], *machine[b], *machine[x]);
+    if (in_machine_form({a, b, x})) return machine_collinear(m(a), m(b), m(x));
     using geometry::operator-;
     auto u = pts[b] - pts[a], v = pts[x] - pts[a];
     return (u[1] * v[2] - u[2] * v[1]).is_zero() && (u[2] * v[0] - u[0] * v[2]).is_zero() &&
@@ -232,13 +234,22 @@ std::array<int, 4> initial_simplex_of(const std::vector<MovingPoint>& pts, const
   if (i == n) throw InputError("all points stay collinear for all time: a 3D hull needs four affinely independent points");
   const int c = order[i];
   auto coplanar = [&](int x) {
-    if (machine[a] && machine[b] && machine[c] && machine[x])
-      return orientation_polynomial(*machine[a], *machine[b], *machine[c], *machine[x]).is_zero();
+    if (in_machine_form({a, b, c, x})) return orientation_polynomial(m(a), m(b), m(c), m(x)).is_zero();
     return orientation_polynomial(pts[a], pts[b], pts[c], pts[x]).is_zero();
   };
   while (i < n && coplanar(order[i])) ++i;
   if (i == n) throw InputError("all points stay coplanar for all time: a 3D hull needs four affinely independent points");
   return {a, b, c, order[i]};
+}
+}  // namespace
+
+std::array<int, 4> initial_simplex_of(const std::vector<MovingPoint>& pts, const std::vector<int>& order) {
+  return choose_initial_simplex(pts, order, nullptr);
+}
+
+std::array<int, 4> initial_simplex_of(const std::vector<MovingPoint>& pts, const std::vector<int>& order,
+                                      const std::vector<std::optional<MachinePoint>>& machine) {
+  return choose_initial_simplex(pts, order, &machine);
 }
 
 MovingPoint three_quarters(const MovingPoint& r) {

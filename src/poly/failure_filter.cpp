@@ -298,16 +298,13 @@ std::int64_t root_free_until(const MachinePolynomial& p, int bits, std::int64_t 
   // A guess s = 2^e with U_i s^i ≤ lo/8 for each i (exponents only); the test below decides.
   int e = 1 << 20;
   const int elo = floor_log2(lo);
-  // ⌊d/i⌋ for i = 1, 2, 3 with constant divisors (unrolled: the same values as a loop over i ≤ n).
-  static_assert(MachinePolynomial::kMaxDegree == 3, "the unrolled window guess covers degrees up to 3");
-  auto guess = [&](int i, auto floor_div) {
-    if (i > n || !(U[i] > 0)) return;  // U_i is finite: A < 2^53 and |c_j| < 2^127 keep it below 2^236
+  // i runs to the machine degree 3 (as U above), a constant trip count: unrolled, constant divisors.
+  static_assert(MachinePolynomial::kMaxDegree == 3, "U and the window guess cover machine degrees up to 3");
+  for (int i = 1; i <= MachinePolynomial::kMaxDegree && i <= n; ++i) {
+    if (!(U[i] > 0)) continue;  // U_i is finite: A < 2^53 and |c_j| < 2^127 keep it below 2^236
     const int d = elo - floor_log2(U[i]) - 4;  // lo/(8·U_i) ≥ 2^d
-    e = std::min(e, floor_div(d));
-  };
-  guess(1, [](int d) { return d; });
-  guess(2, [](int d) { return d >= 0 ? d / 2 : -((-d + 1) / 2); });
-  guess(3, [](int d) { return d >= 0 ? d / 3 : -((-d + 2) / 3); });
+    e = std::min(e, d >= 0 ? d / i : -((-d + i - 1) / i));  // ⌊d/i⌋
+  }
   // The window in lattice intervals: 2^(e+bits), capped at the horizon.
   const int le = e + bits;
   if (le < 0) return from;

@@ -149,13 +149,41 @@ TEST(KineticHull, MachineCertificatesArePolynomialOnes) {
 
 // The initial tetrahedron's tests in machine form (issue 9) choose what the Polynomial tests
 // choose, or refuse with the same message: on moving lines and planes (identically collinear /
-// coplanar prefixes), on points coplanar or collinear only at t = 0, and on small grids.
+// coplanar prefixes), on points coplanar or collinear only at t = 0, and on small grids; unscaled,
+// scaled by 2^30 (every point in machine form, products beyond int64), and scaled by 2^32 (some
+// points beyond machine_point's 36 bits: mixed forms). Scaling keeps every identity.
 TEST(KineticHull, InitialSimplexInMachineFormEqualsTheExactChoice) {
   std::mt19937_64 rng(44);
   auto pick = [&rng](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
-  long long chosen = 0, refused = 0;
+  long long chosen = 0, refused = 0, wide = 0, mixed = 0;
+  auto judge = [&](const std::vector<MovingPoint>& pts, std::vector<int> order, const std::string& what) {
+    try {
+      refuse_identical_trajectories(pts);  // initial_simplex_of's precondition
+    } catch (const InputError&) {
+      return;
+    }
+    std::vector<std::optional<MachinePoint>> machine;
+    for (const auto& p : pts) machine.push_back(machine_point(p));
+    const auto in_form = std::count_if(machine.begin(), machine.end(), [](const auto& m) { return m.has_value(); });
+    auto choose = [&](const std::vector<std::optional<MachinePoint>>* m) -> std::string {
+      try {
+        const auto s = m ? initial_simplex_of(pts, order, *m) : initial_simplex_of(pts, order);
+        return std::to_string(s[0]) + " " + std::to_string(s[1]) + " " + std::to_string(s[2]) + " " + std::to_string(s[3]);
+      } catch (const InputError& e) {
+        return e.what();
+      }
+    };
+    const std::string exact = choose(nullptr), fast = choose(&machine);
+    EXPECT_EQ(fast, exact) << what;
+    (exact.find("points") == std::string::npos ? chosen : refused) += 1;
+    mixed += in_form > 0 && in_form < static_cast<long>(pts.size());
+    for (const auto& m : machine)
+      if (m)
+        for (int k = 0; k < 3; ++k) wide += std::max(std::llabs(m->x[k]), std::llabs(m->v[k])) >= (1LL << 33);
+  };
   for (int trial = 0; trial < 400; ++trial) {
     const int family = trial % 4, n = pick(4, 9);
+    const long long scale = trial % 8 < 4 ? 1 : trial % 2 == 0 ? (1LL << 30) : (1LL << 32);
     // A moving frame o + w·t, e1 + g1·t, e2 + g2·t; points o + s·e1 + r·e2 (+ their velocities).
     auto vec = [&] { return std::array<long long, 3>{pick(-3, 3), pick(-3, 3), pick(-3, 3)}; };
     const auto o = vec(), w = vec(), e1 = vec(), g1 = vec(), e2 = vec(), g2 = vec();
@@ -166,29 +194,26 @@ TEST(KineticHull, InitialSimplexInMachineFormEqualsTheExactChoice) {
       for (int k = 0; k < 3; ++k) c[k] = o[k] + s * e1[k] + r * e2[k], c[3 + k] = w[k] + s * g1[k] + r * g2[k];
       if (family == 2 && i % 3 == 2) c[3 + pick(0, 2)] += pick(1, 2);  // leaves the plane after t = 0
       if (family == 3) c = {pick(-1, 1), pick(-1, 1), pick(-1, 1), pick(-1, 1), pick(-1, 1), pick(-1, 1)};  // a grid
-      if (trial % 8 >= 4)  // beyond the 2^36 of machine_point for one coordinate of every point: mixed forms
-        for (int k = 0; k < 6; k += 5) c[k] *= (1LL << 20);
+      for (auto& x : c) x *= scale;
       pts.push_back(linear(c[0], c[1], c[2], c[3], c[4], c[5]));
     }
-    std::vector<std::optional<MachinePoint>> machine;
-    for (const auto& p : pts) machine.push_back(machine_point(p));
     std::vector<int> order(pts.size());
     for (int i = 0; i < n; ++i) order[i] = i;
     std::shuffle(order.begin(), order.end(), rng);
-    auto choose = [&](const std::vector<std::optional<MachinePoint>>* m) -> std::string {
-      try {
-        const auto s = m ? initial_simplex_of(pts, order, *m) : initial_simplex_of(pts, order);
-        return std::to_string(s[0]) + " " + std::to_string(s[1]) + " " + std::to_string(s[2]) + " " + std::to_string(s[3]);
-      } catch (const InputError& e) {
-        return e.what();
-      }
-    };
-    const std::string exact = choose(nullptr), fast = choose(&machine);
-    EXPECT_EQ(fast, exact) << "trial " << trial;
-    (exact.find("points") == std::string::npos ? chosen : refused) += 1;
+    judge(pts, order, "trial " + std::to_string(trial));
   }
-  EXPECT_GT(chosen, 50);   // both outcomes occur
+  // At machine_point's edge: ±(2^36 − 1) on a moving line and off it (in form), then 2^36 (not).
+  const long long m = (1LL << 36) - 1;
+  for (long long top : {m, m + 1}) {
+    std::vector<MovingPoint> line{linear(0, 0, 0, 0, 0, 0), linear(top, top, -top, -top, top, top),
+                                  linear(-top, -top, top, top, -top, -top), linear(top, -top, top, -top, top, -top),
+                                  linear(-top, top, -top, top, -top, top)};
+    judge(line, {0, 1, 2, 3, 4}, "edge " + std::to_string(top));
+  }
+  EXPECT_GT(chosen, 50);  // both outcomes occur
   EXPECT_GT(refused, 50);
+  EXPECT_GT(wide, 100);   // the machine path ran on entries where int64 products overflow
+  EXPECT_GT(mixed, 10);   // and on inputs where only some points have a machine form
 }
 
 TEST(KineticHull, StartsCoplanar) {

@@ -160,6 +160,17 @@ bool same_vertex(const typename Polytope<2, NT>::Vert& a, const typename Polytop
   }
   return std::vector<int>(a.tight.begin(), a.tight.end()) == std::vector<int>(b.tight.begin(), b.tight.end());
 }
+// The same halfspace a·x ≤ b and the same enclosures of a and b, endpoint for endpoint.
+template <class NT>
+bool same_constraint(const typename Polytope<2, NT>::Constraint& c, const typename Polytope<2, NT>::Constraint& d) {
+  auto same = [](const auto& x, const auto& y) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(x)>, IntervalNT>) return x.lo() == y.lo() && x.hi() == y.hi();
+    else return x == y;
+  };
+  for (std::size_t i = 0; i < 2; ++i)
+    if (!same(c.h.a[i], d.h.a[i]) || !same(c.ai[i], d.ai[i])) return false;
+  return same(c.h.b, d.h.b) && same(c.bi, d.bi);
+}
 template <class NT>
 Halfspace<2, NT> in_nt(const Halfspace<2, Q>& h) {
   Halfspace<2, NT> r;
@@ -349,7 +360,9 @@ void compare_reused(Polytope<2, NT>& R, const std::vector<Halfspace<2, Q>>& cuts
     ASSERT_EQ(R.v.size(), F.v.size()) << what << " cut " << c;
     for (std::size_t k = 0; k < R.v.size(); ++k)
       EXPECT_TRUE(same_vertex<NT>(R.v[k], F.v[k])) << what << " cut " << c << " vertex " << k;
-    EXPECT_EQ(R.h.size(), F.h.size()) << what << " cut " << c;
+    ASSERT_EQ(R.h.size(), F.h.size()) << what << " cut " << c;
+    for (std::size_t k = 0; k < R.h.size(); ++k)
+      EXPECT_TRUE(same_constraint<NT>(R.h[k], F.h[k])) << what << " cut " << c << " constraint " << k;
     EXPECT_EQ(R.version, F.version) << what << " cut " << c;
     EXPECT_EQ(R.ring(), F.ring()) << what << " cut " << c;
     ++compared;
