@@ -14,6 +14,7 @@
 //    pair of points of the operands, and throw Uncertain when the operands do not decide it (overlap,
 //    division by an interval holding 0, overflow, or results too small for fma to certify).
 //  * The caller catches Uncertain and redoes the whole computation exactly (see wellspaced/).
+//  * next_up / next_down equal std::nextafter toward ±∞ for every double (±0, subnormals, ±∞, NaN).
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -24,6 +25,17 @@
 #include <boost/multiprecision/gmp.hpp>
 
 namespace kmr::exact {
+
+// std::nextafter(x, +∞) and std::nextafter(x, −∞), inline (issue 11 §4: the library calls were
+// 2.4 % of a 2D wellspaced run). Equal to std::nextafter for every x, NaN and ±∞
+// included (test IntervalNT.NextUpDownEqualStdNextafter).
+inline double next_up(double x) {
+  if (x != x || x == std::numeric_limits<double>::infinity()) return x;
+  if (x == 0) return std::numeric_limits<double>::denorm_min();
+  const auto bits = std::bit_cast<std::uint64_t>(x);
+  return std::bit_cast<double>(x > 0 ? bits + 1 : bits - 1);
+}
+inline double next_down(double x) { return -next_up(-x); }
 
 // Thrown when interval arithmetic cannot decide; the caller falls back to exact arithmetic.
 struct Uncertain : std::runtime_error {
@@ -175,8 +187,7 @@ inline IntervalNT enclose(const boost::multiprecision::mpq_rational& q) {
       mpz_sizeinbase(mpq_numref(r), 2) - mpz_scan1(mpq_numref(r), 0) <= 53 &&
       std::fabs(d) >= std::numeric_limits<double>::min())
     return IntervalNT(d);
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  return IntervalNT::hull(std::nextafter(d, -inf), std::nextafter(d, inf));
+  return IntervalNT::hull(next_down(d), next_up(d));
 }
 inline const IntervalNT& enclose(const IntervalNT& x) { return x; }
 

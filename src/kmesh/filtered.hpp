@@ -30,7 +30,7 @@ inline IPoint enclose(const Point2& p) {
       return e;
     }
     double w = std::abs(d) * 0x1p-51 + 0x1p-1000;
-    e.c[i] = IntervalNT::hull(std::nextafter(d - w, -INFINITY), std::nextafter(d + w, INFINITY));
+    e.c[i] = IntervalNT::hull(exact::next_down(d - w), exact::next_up(d + w));
   }
   return e;
 }

@@ -137,16 +137,8 @@ int filtered_sign(const IntervalNT& approx, Exact&& exact) {
 // (each product ≤ 2^-1075 off) are covered by the factor 1 + 2^-40 and the absolute 2^-1000.
 namespace double_filter {
 
-// std::nextafter(x, +∞) and std::nextafter(x, −∞), inline (issue 11 §4: the library calls were
-// 2.4 % of a 2D run, from meet_lines_2d). Equal to std::nextafter for every x, NaN and ±∞
-// included (test WellspacedPolytope.NextUpDownEqualStdNextafter).
-inline double next_up(double x) {
-  if (x != x || x == std::numeric_limits<double>::infinity()) return x;
-  if (x == 0) return std::numeric_limits<double>::denorm_min();
-  const auto bits = std::bit_cast<std::uint64_t>(x);
-  return std::bit_cast<double>(x > 0 ? bits + 1 : bits - 1);
-}
-inline double next_down(double x) { return -next_up(-x); }
+using exact::next_down;  // exact/interval_nt.hpp
+using exact::next_up;
 inline constexpr double kSafety = 1 + 0x1p-40;
 inline constexpr double kTinyAbs = 0x1p-1000;
 // 1 / −1 when every point of the enclosures has Σ a_i·x_i − b of that sign; 0 undecided.

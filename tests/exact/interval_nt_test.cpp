@@ -3,7 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <random>
 
 using kmr::exact::enclose;
@@ -149,4 +152,30 @@ TEST(IntervalNT, DivisionIsTheTightestHullOfTheCornerQuotients) {
     for (int c : row) EXPECT_GT(c, 300);  // every sign case is reached often
   EXPECT_GT(refused, 1000);
   EXPECT_GT(checked, 10000);
+}
+
+// kmr::exact::next_up / next_down (issue 11 §4: inline replacements of std::nextafter toward
+// ±∞) must equal std::nextafter bit for bit: zeros of both signs, the subnormal and normal
+// boundaries, ±max, ±∞, NaN, and 200 000 random bit patterns.
+TEST(IntervalNT, NextUpDownEqualStdNextafter) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> xs = {0.0, -0.0, std::numeric_limits<double>::denorm_min(), -std::numeric_limits<double>::denorm_min(),
+                            std::numeric_limits<double>::min(), -std::numeric_limits<double>::min(),
+                            std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(), inf, -inf,
+                            std::numeric_limits<double>::quiet_NaN(), 1.0, -1.0, 0.5, -0.5, 0x1p-1022 - 0x1p-1074};
+  std::mt19937_64 g(1411);
+  for (int k = 0; k < 200000; ++k) xs.push_back(std::bit_cast<double>(g()));
+  int checked = 0;
+  for (double x : xs) {
+    const double u = kmr::exact::next_up(x), d = kmr::exact::next_down(x);
+    const double eu = std::nextafter(x, inf), ed = std::nextafter(x, -inf);
+    if (std::isnan(x)) {
+      EXPECT_TRUE(std::isnan(u) && std::isnan(d));
+      continue;
+    }
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(u), std::bit_cast<std::uint64_t>(eu)) << std::hexfloat << x;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(d), std::bit_cast<std::uint64_t>(ed)) << std::hexfloat << x;
+    ++checked;
+  }
+  EXPECT_GT(checked, 190000);
 }
