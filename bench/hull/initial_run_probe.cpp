@@ -43,8 +43,13 @@ int main(int argc, char** argv) {
   std::vector<int> sizes{20, 40};
   int reps = 5;
   std::uint64_t seed = 20121;  // the audit's default seed
-  for (int i = 1; i + 1 < argc; i += 2) {
-    std::string a = argv[i], v = argv[i + 1];
+  for (int i = 1; i < argc; i += 2) {
+    std::string a = argv[i];
+    if ((a != "--n" && a != "--reps" && a != "--seed") || i + 1 >= argc) {
+      std::fprintf(stderr, "usage: initial_run_probe [--n 20,40] [--reps R] [--seed S] (bad or incomplete option '%s')\n", a.c_str());
+      return 2;
+    }
+    std::string v = argv[i + 1];
     if (a == "--n") {
       sizes.clear();
       std::stringstream ss(v);
