@@ -225,3 +225,65 @@ TEST(KineticMesh, L4_3_1_LocalDelaunayRepairEqualsTheFromScratchTriangulation) {
     std::cout << "three moving points: " << a.batches + b.batches + c.batches << " batches\n";
   }
 }
+
+namespace {
+
+// Every kept certificate holds at k.now() (L4.3.1); "" or the first that does not.
+std::string first_failing_now(const KineticMesh& k) {
+  for (auto& c : k.current_certificates())
+    if (!holds_at(c, Dyadic(0)))
+      return std::string(kind_name(c.kind)) + " certificate of " + std::to_string(c.a) + ", " + std::to_string(c.b) +
+             " (rank " + std::to_string(c.rank) + ") fails at " + k.now().to_decimal();
+  return "";
+}
+
+// Certificates violated where they vanish (strict, not Delaunay: holds_at), whose polynomial (of t − now)
+// vanishes at dt > 0: counted independently of the KDS's scheduling, from the exact sign.
+int strict_vanishing_at(const std::vector<Certificate>& cs, const Dyadic& dt) {
+  int n = 0;
+  for (auto& c : cs)
+    if (c.strict && c.kind != Certificate::Delaunay && c.value.degree() > 0 && c.value.sign_at(dt) == 0) ++n;
+  return n;
+}
+
+}  // namespace
+
+// A strict certificate (separation, potential-neighbour, ball-empty) whose polynomial vanishes at a
+// lattice time t is violated at t itself: it fails in the interval ending at t and must be repaired
+// by the batch processed at t — also when t is the horizon of run_until (§4.3, L4.3.1 at every
+// lattice time). (161, 0) moves towards (0, 0) at speed 1, lattice 2^−4: their potential-neighbour
+// certificate at rank 3 (|xy| > 20·2^3 = 160), and about 50 other strict ones between their
+// satellites, vanish at t = 1; only one batch (at 1/4) comes before. run_until is called a quarter
+// at a time; after every call and every batch every kept certificate must hold at now().
+TEST(KineticMesh, L4_3_1_StrictCertificateVanishingAtTheHorizonIsRepairedThere) {
+  RecordProperty("claim", "L4.3.1");
+  KineticMesh k({mv(0, 0), mv(161, 0, -1, 0)}, 4);
+  int vanishing = 0;  // strict certificates vanishing at the end of a step (the case under test)
+  for (int step = 1; step <= 5; ++step) {
+    const Dyadic T(step, -2);
+    vanishing += strict_vanishing_at(k.current_certificates(), T - k.now());
+    k.run_until(T, [&](const Batch& b) { EXPECT_EQ(first_failing_now(k), "") << "batch at " << b.time.to_decimal(); });
+    EXPECT_EQ(k.now(), T);
+    EXPECT_EQ(first_failing_now(k), "") << "after run_until(" << T.to_decimal() << ")";
+  }
+  EXPECT_GE(vanishing, 1) << "the input has no strict certificate vanishing at a step's end";
+  std::cout << "strict certificates vanishing at the end of a step: " << vanishing << "\n";
+}
+
+// kmr kmesh --check found it (exit 1 on valid input): (0, 0), (4, 0) moving (0, 1) and (9, 7) at
+// rest; (3, 3) moving (1, 0) inserted at 1/8, (9, 7) deleted at 1/4, lattice 2^−3. After every
+// batch and update the kept certificates must equal the from-scratch recomputation.
+TEST(KineticMesh, L4_3_1_KeptCertificatesEqualTheRecomputationAfterAnInsertionAndADeletion) {
+  RecordProperty("claim", "L4.3.1");
+  KineticMesh k({mv(0, 0), mv(4, 0, 0, 1), mv(9, 7)}, 3);
+  auto each = [&](const Batch& b) { EXPECT_EQ(incremental_vs_recomputed(k), "") << "batch at " << b.time.to_decimal(); };
+  k.run_until(Dyadic(1, -3), each);
+  EXPECT_EQ(incremental_vs_recomputed(k), "") << "at 1/8";
+  k.insert(mv(3, 3, 1, 0));
+  EXPECT_EQ(incremental_vs_recomputed(k), "") << "after the insertion at 1/8";
+  k.run_until(Dyadic(1, -2), each);
+  EXPECT_EQ(incremental_vs_recomputed(k), "") << "at 1/4";
+  k.erase(mv(9, 7));
+  EXPECT_EQ(incremental_vs_recomputed(k), "") << "after the deletion at 1/4";
+  EXPECT_EQ(failures(check_all_updated(k.mesh())), "");
+}
