@@ -254,6 +254,20 @@ bool holds_at(const Certificate& c, const Dyadic& t) {
   return c.strict ? s > 0 : s >= 0;
 }
 
+bool fails_at_zero(const Certificate& c) { return c.strict && c.kind != Certificate::Delaunay; }
+
+std::optional<exact::Integer> failure_batch(const poly::LatticeRootSolver& s, bool zero_fails, const Dyadic& from,
+                                            const Dyadic& horizon) {
+  const int bits = s.lattice_bits();
+  // One interval past the horizon: a strict certificate vanishing at the horizon is a batch before it.
+  auto f = s.next_failure_after(from, horizon + Dyadic(1, -bits));
+  if (!f) return std::nullopt;
+  exact::Integer k = *f;
+  if (zero_fails && s.lattice_point(k) > from && s.polynomial().sign_at(k, bits) == 0) k -= 1;
+  if (!(s.lattice_point(k) < horizon)) return std::nullopt;
+  return k;
+}
+
 std::optional<std::pair<exact::Integer, std::size_t>> first_failure(const std::vector<Certificate>& certs, int bits,
                                                                     const Dyadic& horizon) {
   std::optional<std::pair<exact::Integer, std::size_t>> best;

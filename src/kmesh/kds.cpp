@@ -17,7 +17,7 @@ std::optional<std::pair<exact::Integer, std::vector<std::size_t>>> next_batch(co
   for (std::size_t i = 0; i < certs.size(); ++i) {
     if (certs[i].value.degree() <= 0) continue;
     poly::LatticeRootSolver s(certs[i].value, bits);
-    auto f = s.next_failure_after(from, k ? Dyadic(*k + 1, -bits) : horizon);
+    auto f = failure_batch(s, fails_at_zero(certs[i]), from, k ? Dyadic(*k + 1, -bits) : horizon);
     if (!f) continue;
     if (!k || *f < *k) k = f;
     found.push_back({*f, i});
@@ -180,7 +180,7 @@ void KineticMesh::isolate(const Key& key, Kept& k, const Dyadic& T) {
   if (k.fail || k.searched_to < now()) k.searched_from = now();
   Dyadic to = std::max(T, from + Dyadic(16) * Dyadic(1, -bits_));
   poly::LatticeRootSolver s(k.cert.value, bits_);
-  k.fail = s.next_failure_after(from, to);
+  k.fail = failure_batch(s, fails_at_zero(k.cert), from, to);
   k.searched_to = to;
   if (k.fail) queue_.insert({*k.fail, key});
   else pending_.insert({to, key});
@@ -199,7 +199,7 @@ KineticMesh::next_failures(const Dyadic& T) {
       const Kept& k = e.second;
       if (k.cert.value.degree() <= 0) continue;
       poly::LatticeRootSolver s(shifted_by_dyadic(k.cert.value, now()), bits_);
-      auto f = s.next_failure_after(Dyadic(0), T - now());
+      auto f = failure_batch(s, fails_at_zero(k.cert), Dyadic(0), T - now());
       if (!f || (best && *f > *best)) continue;
       if (!best || *f < *best) best = f, failed.clear();
       failed.push_back(&e);

@@ -12,8 +12,10 @@
 // Guarantees (tests/kmesh/kds_test.cpp, proptests/kmesh/kds_state_prop.cpp):
 //  * L4.3.1: after the construction and after every batch and update, every certificate holds at
 //    now() (so the mesh is certified until the next batch's interval);
-//  * a batch is the set of certificates whose first sign change falls in one lattice interval; a
-//    batch of Delaunay certificates only (no spanner or ball certificate) changes no vertex of M;
+//  * a batch is the set of certificates whose first failure falls in one lattice interval
+//    (kδ, (k+1)δ], repaired at (k+1)δ (failure_batch in kmesh/certificates.hpp: a strict certificate
+//    vanishing at (k+1)δ is violated there, so it is in that batch); a batch of Delaunay
+//    certificates only (no spanner or ball certificate) changes no vertex of M;
 //  * mesh() passes the brute-force checks of an updated mesh (kmesh/invariants.hpp,
 //    check_all_updated: spanner, U1, L4.3.2, L4.2.6, L4.2.9, L4.2.10, Delaunay, 9/2-well-spaced);
 //  * incremental certificates: a certificate is kept under a canonical name (kind, rank, and its
@@ -43,8 +45,8 @@
 
 namespace kmr::kmesh {
 
-// The first lattice interval k ≥ from/δ, kδ < horizon, in which some certificate changes sign, and
-// every certificate whose first sign change after `from` is that interval.
+// The first batch k ≥ from/δ, kδ < horizon (failure_batch: failing in (kδ, (k+1)δ]), and every
+// certificate whose first failure after `from` is in that batch.
 std::optional<std::pair<exact::Integer, std::vector<std::size_t>>> next_batch(const std::vector<Certificate>& certs,
                                                                              int bits, const Dyadic& from,
                                                                              const Dyadic& horizon);
@@ -53,6 +55,11 @@ class KineticMesh {
  public:
   KineticMesh(std::vector<InputPoint> trajectories, int lattice_bits);
   // Advances to time T (≥ now), processing every batch on the way; `after` is called after each.
+  // A batch is repaired at the end (k+1)δ of its interval and holds the certificates failing in
+  // (kδ, (k+1)δ] (failure_batch: a strict one vanishing at (k+1)δ is violated there), so at a lattice
+  // T every certificate holds at now() = T, also one failing exactly at T. T off the lattice: the
+  // batch of the interval holding T is repaired at that interval's end, so now() ends after T (by
+  // less than δ); with no batch there, now() = T (the CLI takes lattice times only).
   void run_until(const Dyadic& T, const std::function<void(const Batch&)>& after = {});
   void insert(const InputPoint& p);  // at now(); InputError (nothing changed) for a duplicate
   void erase(const InputPoint& p);   // at now(); InputError if absent or the last point
