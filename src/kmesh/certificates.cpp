@@ -186,6 +186,7 @@ Certificate build_one(const CertificateSpec& sp, MovingPoints& mp) {
     return s;
   };
   Certificate out{sp.kind, sp.a, sp.b, sp.rank, sp.strict, {}};
+  if (sp.kind == Certificate::BallNotEmpty || sp.kind == Certificate::BallEmpty) out.ray = sp.d;
   switch (sp.kind) {
     case Certificate::ParentChild:  // |x parent|² ≤ (2^(top+1))²
       out.value = to_poly(-(d2(mp(sp.a), mp(sp.b)) - DPoly(threshold2(1, sp.rank))));
