@@ -93,16 +93,29 @@ std::vector<CertificateSpec> certificate_specs(const Mesh& m, const WitnessChoic
   std::vector<std::size_t> mark(N, 0);
   std::size_t stamp = 0;
   std::vector<int> cousins;
+  static const std::vector<int> kNone;
+  std::vector<Rank> ranks;
   for (int x = 0; x < N; ++x) {
     if (x != S.root()) out.push_back({Certificate::ParentChild, x, S.parent(x), S.top(x) + 1, false});
-    for (auto& [l, list] : S.all_neighbors(x)) {
+    for (auto& [l, list] : S.all_neighbors(x))
       for (int y : list)
         if (y > x) {
           out.push_back({Certificate::Separation, x, y, l, true});
           out.push_back({Certificate::Edge, x, y, l, false});
         }
-      // Potential neighbours: cousins (children of the (l+1)-neighbours of x's rank-(l+1) representative).
+    // Potential neighbours at rank l: cousins (x's rank-(l+1) representative r, its (l+1)-neighbours,
+    // and their children at l) that are not l-neighbours. Kids of r alone are all l-neighbours
+    // (within 2·2^(l+1) of r), so a rank needs r to have (l+1)-neighbours: r = x for l < top(x) (the
+    // ranks l − 1 below x's lists, also where x has no list at l: gaps, and the rank below λ_x), r =
+    // parent(x) for l = top(x).
+    ranks.clear();
+    for (auto& [l, list] : S.all_neighbors(x))
+      if (!list.empty() && l <= S.top(x)) ranks.push_back(l - 1);
+    if (S.top(x) < S.top_rank()) ranks.push_back(S.top(x));
+    for (Rank l : ranks) {
       if (l >= S.top_rank()) continue;
+      auto own = S.all_neighbors(x).find(l);
+      const std::vector<int>& list = own == S.all_neighbors(x).end() ? kNone : own->second;
       int r = S.rep(x, l + 1);
       ++stamp;
       cousins.clear();
@@ -186,7 +199,7 @@ Certificate build_one(const CertificateSpec& sp, MovingPoints& mp) {
     return s;
   };
   Certificate out{sp.kind, sp.a, sp.b, sp.rank, sp.strict, {}};
-  if (sp.kind == Certificate::BallNotEmpty || sp.kind == Certificate::BallEmpty) out.ray = sp.d;
+  if (sp.kind == Certificate::BallNotEmpty) out.ray = sp.d;
   switch (sp.kind) {
     case Certificate::ParentChild:  // |x parent|² ≤ (2^(top+1))²
       out.value = to_poly(-(d2(mp(sp.a), mp(sp.b)) - DPoly(threshold2(1, sp.rank))));

@@ -37,7 +37,7 @@ struct Certificate {
   Rank rank;
   bool strict;
   poly::Polynomial value;  // holds while value(t) ≥ 0 (strict: > 0)
-  int ray = -1;  // ball certificates: the satellite's ray (with its rank and nucleus, its name)
+  int ray = -1;  // ball-not-empty: the satellite's ray (with its rank and nucleus a, its name)
 };
 
 const char* kind_name(Certificate::Kind k);

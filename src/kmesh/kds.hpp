@@ -121,10 +121,11 @@ class KineticMesh {
 // `kmr kmesh --check` (§4.3, incremental): every kept certificate holds now (L4.3.1), and the kept set
 // (current_certificates) equals the recomputation from scratch on the current mesh
 // (recomputed_certificates) as multisets of names: kind, rank, strictness, ends (unordered for the
-// symmetric kinds), the satellite's ray for the ball kinds, and the polynomial up to a positive
-// factor (which tells a Delaunay in-circle's apexes apart). A ball-not-empty certificate is named by
-// its satellite (nucleus, ray, rank) only: its witness may differ (above), and must hold now. One
-// violation per kind whose names differ, with the counts and a first example.
+// symmetric kinds, ball-empty included: |s v| named by its two vertices and the rank) and the
+// polynomial up to a positive factor (which tells a Delaunay in-circle's apexes apart). A
+// ball-not-empty certificate is named by its satellite (nucleus, ray, rank) only: its witness may
+// differ (above), and must hold now. One violation per kind whose names differ, with the counts and
+// a first example.
 CheckResult check_kept_certificates(const KineticMesh& k);
 
 }  // namespace kmr::kmesh

@@ -79,8 +79,8 @@ TEST(KineticMesh, InsertionsAndDeletionsOfMovingPoints) {
 namespace {
 
 // A certificate as a comparable record: kind, rank, strictness, its ends (unordered for the
-// symmetric kinds), the ray of a ball certificate's satellite, and its polynomial up to a positive
-// factor (primitive part). A ball-not-empty certificate is compared by its satellite (nucleus, ray,
+// symmetric kinds), the ray of a ball-not-empty certificate's satellite, and its polynomial up to
+// a positive factor (primitive part). A ball-not-empty certificate is compared by its satellite (nucleus, ray,
 // rank) only: its witness is any vertex of rank ≤ ℓ in the ball (the kept one stays while it is in
 // the ball; the recomputation takes the nearest now), and each kept one must hold now. (Its ends are
 // not ordered before the witness is dropped: a witness changing from below the nucleus's id to above
