@@ -93,16 +93,29 @@ std::vector<CertificateSpec> certificate_specs(const Mesh& m, const WitnessChoic
   std::vector<std::size_t> mark(N, 0);
   std::size_t stamp = 0;
   std::vector<int> cousins;
+  static const std::vector<int> kNone;
+  std::vector<Rank> ranks;
   for (int x = 0; x < N; ++x) {
     if (x != S.root()) out.push_back({Certificate::ParentChild, x, S.parent(x), S.top(x) + 1, false});
-    for (auto& [l, list] : S.all_neighbors(x)) {
+    for (auto& [l, list] : S.all_neighbors(x))
       for (int y : list)
         if (y > x) {
           out.push_back({Certificate::Separation, x, y, l, true});
           out.push_back({Certificate::Edge, x, y, l, false});
         }
-      // Potential neighbours: cousins (children of the (l+1)-neighbours of x's rank-(l+1) representative).
+    // Potential neighbours at rank l: cousins (x's rank-(l+1) representative r, its (l+1)-neighbours,
+    // and their children at l) that are not l-neighbours. Kids of r alone are all l-neighbours
+    // (within 2·2^(l+1) of r), so a rank needs r to have (l+1)-neighbours: r = x for l < top(x) (the
+    // ranks l − 1 below x's lists, also where x has no list at l: gaps, and the rank below λ_x), r =
+    // parent(x) for l = top(x).
+    ranks.clear();
+    for (auto& [l, list] : S.all_neighbors(x))
+      if (!list.empty() && l <= S.top(x)) ranks.push_back(l - 1);
+    if (S.top(x) < S.top_rank()) ranks.push_back(S.top(x));
+    for (Rank l : ranks) {
       if (l >= S.top_rank()) continue;
+      auto own = S.all_neighbors(x).find(l);
+      const std::vector<int>& list = own == S.all_neighbors(x).end() ? kNone : own->second;
       int r = S.rep(x, l + 1);
       ++stamp;
       cousins.clear();
@@ -186,6 +199,7 @@ Certificate build_one(const CertificateSpec& sp, MovingPoints& mp) {
     return s;
   };
   Certificate out{sp.kind, sp.a, sp.b, sp.rank, sp.strict, {}};
+  if (sp.kind == Certificate::BallNotEmpty) out.ray = sp.d;
   switch (sp.kind) {
     case Certificate::ParentChild:  // |x parent|² ≤ (2^(top+1))²
       out.value = to_poly(-(d2(mp(sp.a), mp(sp.b)) - DPoly(threshold2(1, sp.rank))));
@@ -252,6 +266,20 @@ bool holds_at(const Certificate& c, const Dyadic& t) {
   int s = c.value.sign_at(t);
   if (s == 0 && c.kind == Certificate::Delaunay) return true;  // cocircular now: the perturbation decides
   return c.strict ? s > 0 : s >= 0;
+}
+
+bool fails_at_zero(const Certificate& c) { return c.strict && c.kind != Certificate::Delaunay; }
+
+std::optional<exact::Integer> failure_batch(const poly::LatticeRootSolver& s, bool zero_fails, const Dyadic& from,
+                                            const Dyadic& horizon) {
+  const int bits = s.lattice_bits();
+  // One interval past the horizon: a strict certificate vanishing at the horizon is a batch before it.
+  auto f = s.next_failure_after(from, horizon + Dyadic(1, -bits));
+  if (!f) return std::nullopt;
+  exact::Integer k = *f;
+  if (zero_fails && s.lattice_point(k) > from && s.polynomial().sign_at(k, bits) == 0) k -= 1;
+  if (!(s.lattice_point(k) < horizon)) return std::nullopt;
+  return k;
 }
 
 std::optional<std::pair<exact::Integer, std::size_t>> first_failure(const std::vector<Certificate>& certs, int bits,

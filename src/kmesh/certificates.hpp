@@ -26,6 +26,7 @@
 
 #include "kmesh/construction.hpp"
 #include "poly/polynomial.hpp"
+#include "poly/sturm.hpp"
 
 namespace kmr::kmesh {
 
@@ -36,6 +37,7 @@ struct Certificate {
   Rank rank;
   bool strict;
   poly::Polynomial value;  // holds while value(t) ≥ 0 (strict: > 0)
+  int ray = -1;  // ball-not-empty: the satellite's ray (with its rank and nucleus a, its name)
 };
 
 const char* kind_name(Certificate::Kind k);
@@ -72,6 +74,19 @@ poly::Polynomial shifted_by_dyadic(const poly::Polynomial& p, const Dyadic& d);
 
 // Whether c holds at the dyadic time t (exact; an identically zero Delaunay polynomial holds).
 bool holds_at(const Certificate& c, const Dyadic& t);
+
+// Whether c is violated where its polynomial vanishes: a strict certificate, except a Delaunay one
+// (a zero of an orientation or in-circle polynomial is decided by the symbolic perturbation).
+bool fails_at_zero(const Certificate& c);
+
+// The batch of a certificate (δ = 2^−bits, s its polynomial's solver): the first lattice index
+// k ≥ from/δ with kδ < horizon such that it fails in (kδ, (k+1)δ], so that repairing it at (k+1)δ
+// leaves it holding at every lattice time before. The solver's sign-change interval f, [fδ, (f+1)δ),
+// is batch f, except when the certificate fails at a zero (fails_at_zero) and vanishes at fδ > from:
+// it is violated at fδ itself, so it is batch f − 1, repaired at fδ (and found before a horizon fδ).
+// A zero of even multiplicity is no failure (the solver's semantics), nor is a zero at `from`.
+std::optional<exact::Integer> failure_batch(const poly::LatticeRootSolver& s, bool zero_fails, const Dyadic& from,
+                                            const Dyadic& horizon);
 
 // The first lattice interval index k (δ = 2^−bits) with kδ ≥ 0 and kδ < horizon in which some
 // certificate changes sign, and that certificate; nullopt if none does.

@@ -1,6 +1,9 @@
 #include "kmesh/kds.hpp"
 
 #include <algorithm>
+#include <iterator>
+#include <string>
+#include <tuple>
 #include <limits>
 #include <set>
 
@@ -17,7 +20,7 @@ std::optional<std::pair<exact::Integer, std::vector<std::size_t>>> next_batch(co
   for (std::size_t i = 0; i < certs.size(); ++i) {
     if (certs[i].value.degree() <= 0) continue;
     poly::LatticeRootSolver s(certs[i].value, bits);
-    auto f = s.next_failure_after(from, k ? Dyadic(*k + 1, -bits) : horizon);
+    auto f = failure_batch(s, fails_at_zero(certs[i]), from, k ? Dyadic(*k + 1, -bits) : horizon);
     if (!f) continue;
     if (!k || *f < *k) k = f;
     found.push_back({*f, i});
@@ -180,7 +183,7 @@ void KineticMesh::isolate(const Key& key, Kept& k, const Dyadic& T) {
   if (k.fail || k.searched_to < now()) k.searched_from = now();
   Dyadic to = std::max(T, from + Dyadic(16) * Dyadic(1, -bits_));
   poly::LatticeRootSolver s(k.cert.value, bits_);
-  k.fail = s.next_failure_after(from, to);
+  k.fail = failure_batch(s, fails_at_zero(k.cert), from, to);
   k.searched_to = to;
   if (k.fail) queue_.insert({*k.fail, key});
   else pending_.insert({to, key});
@@ -199,7 +202,7 @@ KineticMesh::next_failures(const Dyadic& T) {
       const Kept& k = e.second;
       if (k.cert.value.degree() <= 0) continue;
       poly::LatticeRootSolver s(shifted_by_dyadic(k.cert.value, now()), bits_);
-      auto f = s.next_failure_after(Dyadic(0), T - now());
+      auto f = failure_batch(s, fails_at_zero(k.cert), Dyadic(0), T - now());
       if (!f || (best && *f > *best)) continue;
       if (!best || *f < *best) best = f, failed.clear();
       failed.push_back(&e);
@@ -302,6 +305,52 @@ void KineticMesh::run_until(const Dyadic& T, const std::function<void(const Batc
     refresh("events", failed.size(), moved.size());
     if (after) after(batches_.back());
   }
+}
+
+CheckResult check_kept_certificates(const KineticMesh& k) {
+  CheckResult r{"L4.3.1 (kept certificates = recomputed)", {}, 0};
+  auto kept = k.current_certificates();
+  for (auto& c : kept)
+    if (!holds_at(c, Dyadic(0)))
+      r.violations.push_back(std::string(kind_name(c.kind)) + " certificate of " + std::to_string(c.a) + ", " +
+                             std::to_string(c.b) + " fails at the repair time " + k.now().to_decimal());
+  using Name = std::tuple<int, Rank, bool, int, int, int, std::string>;
+  auto names = [](const std::vector<Certificate>& cs) {
+    std::vector<Name> out;
+    for (auto& c : cs) {
+      int a = c.a, b = c.b;
+      std::string p = c.value.is_zero() ? "0" : c.value.primitive_part().to_string();
+      if (c.kind == Certificate::BallNotEmpty) b = -1, p.clear();  // the satellite (a, ray, rank) only
+      else if (c.kind != Certificate::ParentChild && c.kind != Certificate::Delaunay && a > b) std::swap(a, b);
+      out.push_back({c.kind, c.rank, c.strict, a, b, c.ray, std::move(p)});
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  auto a = names(kept), b = names(k.recomputed_certificates());
+  if (a == b) return r;
+  std::vector<Name> only_kept, only_new;
+  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(only_kept));
+  std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(only_new));
+  for (int kind = Certificate::ParentChild; kind <= Certificate::Delaunay; ++kind) {
+    auto count = [&](const std::vector<Name>& v) {
+      return std::count_if(v.begin(), v.end(), [&](const Name& x) { return std::get<0>(x) == kind; });
+    };
+    auto first = [&](const std::vector<Name>& v) -> std::string {
+      for (auto& x : v)
+        if (std::get<0>(x) == kind)
+          return "rank " + std::to_string(std::get<1>(x)) + " ends " + std::to_string(std::get<3>(x)) + ", " +
+                 std::to_string(std::get<4>(x)) + (std::get<5>(x) >= 0 ? " ray " + std::to_string(std::get<5>(x)) : "");
+      return "none";
+    };
+    if (count(only_kept) + count(only_new) == 0) continue;
+    r.violations.push_back(std::string(kind_name(Certificate::Kind(kind))) + " certificates: " +
+                           std::to_string(count(a)) + " kept vs " + std::to_string(count(b)) + " recomputed at " +
+                           k.now().to_decimal() + "; " + std::to_string(count(only_kept)) + " only kept (first: " +
+                           first(only_kept) + "), " + std::to_string(count(only_new)) + " only recomputed (first: " +
+                           first(only_new) + ")");
+  }
+  return r;
 }
 
 void KineticMesh::insert(const InputPoint& p) {

@@ -12,8 +12,10 @@
 // Guarantees (tests/kmesh/kds_test.cpp, proptests/kmesh/kds_state_prop.cpp):
 //  * L4.3.1: after the construction and after every batch and update, every certificate holds at
 //    now() (so the mesh is certified until the next batch's interval);
-//  * a batch is the set of certificates whose first sign change falls in one lattice interval; a
-//    batch of Delaunay certificates only (no spanner or ball certificate) changes no vertex of M;
+//  * a batch is the set of certificates whose first failure falls in one lattice interval
+//    (kδ, (k+1)δ], repaired at (k+1)δ (failure_batch in kmesh/certificates.hpp: a strict certificate
+//    vanishing at (k+1)δ is violated there, so it is in that batch); a batch of Delaunay
+//    certificates only (no spanner or ball certificate) changes no vertex of M;
 //  * mesh() passes the brute-force checks of an updated mesh (kmesh/invariants.hpp,
 //    check_all_updated: spanner, U1, L4.3.2, L4.2.6, L4.2.9, L4.2.10, Delaunay, 9/2-well-spaced);
 //  * incremental certificates: a certificate is kept under a canonical name (kind, rank, and its
@@ -38,13 +40,14 @@
 #include <tuple>
 #include <vector>
 
+#include "kmesh/invariants.hpp"
 #include "kmesh/rebuild_simulation.hpp"
 #include "kmesh/update.hpp"
 
 namespace kmr::kmesh {
 
-// The first lattice interval k ≥ from/δ, kδ < horizon, in which some certificate changes sign, and
-// every certificate whose first sign change after `from` is that interval.
+// The first batch k ≥ from/δ, kδ < horizon (failure_batch: failing in (kδ, (k+1)δ]), and every
+// certificate whose first failure after `from` is in that batch.
 std::optional<std::pair<exact::Integer, std::vector<std::size_t>>> next_batch(const std::vector<Certificate>& certs,
                                                                              int bits, const Dyadic& from,
                                                                              const Dyadic& horizon);
@@ -53,6 +56,11 @@ class KineticMesh {
  public:
   KineticMesh(std::vector<InputPoint> trajectories, int lattice_bits);
   // Advances to time T (≥ now), processing every batch on the way; `after` is called after each.
+  // A batch is repaired at the end (k+1)δ of its interval and holds the certificates failing in
+  // (kδ, (k+1)δ] (failure_batch: a strict one vanishing at (k+1)δ is violated there), so at a lattice
+  // T every certificate holds at now() = T, also one failing exactly at T. T off the lattice: the
+  // batch of the interval holding T is repaired at that interval's end, so now() ends after T (by
+  // less than δ); with no batch there, now() = T (the CLI takes lattice times only).
   void run_until(const Dyadic& T, const std::function<void(const Batch&)>& after = {});
   void insert(const InputPoint& p);  // at now(); InputError (nothing changed) for a duplicate
   void erase(const InputPoint& p);   // at now(); InputError if absent or the last point
@@ -109,5 +117,15 @@ class KineticMesh {
   std::size_t events_ = 0;
   std::size_t created_ = 0, destroyed_ = 0;
 };
+
+// `kmr kmesh --check` (§4.3, incremental): every kept certificate holds now (L4.3.1), and the kept set
+// (current_certificates) equals the recomputation from scratch on the current mesh
+// (recomputed_certificates) as multisets of names: kind, rank, strictness, ends (unordered for the
+// symmetric kinds, ball-empty included: |s v| named by its two vertices and the rank) and the
+// polynomial up to a positive factor (which tells a Delaunay in-circle's apexes apart). A
+// ball-not-empty certificate is named by its satellite (nucleus, ray, rank) only: its witness may
+// differ (above), and must hold now. One violation per kind whose names differ, with the counts and
+// a first example.
+CheckResult check_kept_certificates(const KineticMesh& k);
 
 }  // namespace kmr::kmesh

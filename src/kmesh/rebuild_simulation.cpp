@@ -78,7 +78,7 @@ void RebuildSimulation::run_until(const Dyadic& T, const std::function<void(cons
     for (auto& c : certs_) {
       if (c.value.degree() <= 0) continue;
       poly::LatticeRootSolver s(c.value, bits_);
-      auto f = s.next_failure_after(from, k ? Dyadic(*k + 1, -bits_) : horizon);
+      auto f = failure_batch(s, fails_at_zero(c), from, k ? Dyadic(*k + 1, -bits_) : horizon);
       if (f && (!k || *f < *k)) k = f;
     }
     if (!k) {
@@ -89,7 +89,7 @@ void RebuildSimulation::run_until(const Dyadic& T, const std::function<void(cons
     for (auto& c : certs_) {
       if (c.value.degree() <= 0) continue;
       poly::LatticeRootSolver s(c.value, bits_);
-      auto f = s.next_failure_after(from, Dyadic(*k + 1, -bits_));
+      auto f = failure_batch(s, fails_at_zero(c), from, Dyadic(*k + 1, -bits_));
       if (f && *f == *k) ++n;
     }
     now_ = built_at_ + Dyadic(*k + 1, -bits_);

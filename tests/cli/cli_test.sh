@@ -98,6 +98,20 @@ if [ $? -eq 0 ] && grep -qF '"repair": "fig4.5"' "$tmp/km11.json" && ! grep -qF 
 "$kmr" kmesh "$tmp/km6.txt" --until 0.25 --lattice-bits 2 --rebuild --stats "$tmp/km12.json" >/dev/null 2>"$tmp/err"
 if [ $? -eq 0 ] && grep -qF '"repair": "rebuild"' "$tmp/km12.json"; then passed=$((passed+1)); else
   failed=$((failed+1)); echo "FAIL kmesh-kinetic-rebuild"; cat "$tmp/err"; fi
+# --check compares the kept certificates' names with a recomputation from scratch (kmesh17). A valid
+# run where satellites keep a witness other than the nearest must pass (it exited 1 when a
+# ball-not-empty certificate's ends were ordered before its witness was dropped).
+printf '0 0\n4 0 0 1\n9 7\n' >"$tmp/km13.txt"
+printf '0.125 + 3 3 1 0\n0.25 - 9 7 0 0\n' >"$tmp/km13u.txt"
+"$kmr" kmesh "$tmp/km13.txt" --until 0.25 --lattice-bits 3 --updates "$tmp/km13u.txt" --check >/dev/null 2>"$tmp/err"
+if [ $? -eq 0 ] && [ ! -s "$tmp/err" ]; then passed=$((passed+1)); else
+  failed=$((failed+1)); echo "FAIL kmesh-check-witness"; cat "$tmp/err"; fi
+# (161,0) moving (-1,0): ~50 strict certificates vanish at t = 1 (e.g. |xy| > 20·2^3); they fail at 1
+# and are repaired by a batch at 1, and --check also checks the mesh at T after the last batch.
+printf '0 0\n161 0 -1 0\n' >"$tmp/km14.txt"
+"$kmr" kmesh "$tmp/km14.txt" --until 1 --lattice-bits 4 --check --stats "$tmp/km14.json" >/dev/null 2>"$tmp/err"
+if [ $? -eq 0 ] && grep -qF '{"time": 1, "what": "events"' "$tmp/km14.json"; then passed=$((passed+1)); else
+  failed=$((failed+1)); echo "FAIL kmesh-check-at-horizon"; cat "$tmp/err"; fi
 # (0,0) moving (1,1) meets (4,4) at t = 4: refused when T ≥ 4, accepted before.
 printf '0 0 1 1\n4 4\n' >"$tmp/km7.txt"
 expect_error kmesh-collision-later 'collide at time 4' -- kmesh "$tmp/km7.txt" --until 5

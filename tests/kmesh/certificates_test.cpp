@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <iterator>
 #include <random>
+#include <string>
 #include <tuple>
 
 #include "kmesh/certificates.hpp"
@@ -81,30 +83,17 @@ TEST(Certificates, L4_3_1_HoldAtZeroAndCertifyUntilTheFirstFailure) {
 }
 
 // certificate_specs (kmesh12: stamps and sorted lists instead of per-vertex sets) against a
-// brute-force enumeration sharing none of its loops: potential-neighbour pairs from the parent
-// pointers (y is a cousin of x at ℓ iff rep(y, ℓ+1) — y itself, or its parent when top(y) = ℓ — is
-// r = rep(x, ℓ+1) or an (ℓ+1)-neighbour of r), ball-empty pairs from the distances
+// brute-force enumeration sharing none of its loops: ball-empty pairs from the distances
 // (|s v| ≤ c·2^ℓ′ at the highest ℓ′ ∈ [ℓ−6, ℓ−1] where both are centers). Compared as multisets of
-// (kind, a, b, rank) on constructed meshes and on an updated one.
+// (kind, a, b, rank) on constructed meshes and on an updated one. (Its potential-neighbour half
+// walked the ranks of x's neighbour lists, the rule it was checking, and missed the pairs at ranks
+// without a list: PotentialNeighbourCertificatesEqualTheirDefinition below replaces it, kmesh17.)
 TEST(Certificates, SpecsEqualABruteForceEnumeration) {
   using K = Certificate::Kind;
   using Row = std::tuple<int, int, int, Rank>;
   auto expected = [](const Mesh& m) {
     const Spanner& S = m.spanner;
-    const int N = static_cast<int>(m.size());
     std::vector<Row> out;
-    for (int x = 0; x < N; ++x)
-      for (auto& [l, list] : S.all_neighbors(x)) {
-        if (l >= S.top_rank()) continue;
-        const int r = S.rep(x, l + 1);
-        const std::vector<int>& rn = S.neighbors(r, l + 1);
-        auto in_family = [&](int z) { return z == r || std::find(rn.begin(), rn.end(), z) != rn.end(); };
-        for (int y = x + 1; y < N; ++y) {
-          if (S.top(y) < l || std::find(list.begin(), list.end(), y) != list.end()) continue;
-          const int ry = S.top(y) >= l + 1 ? y : S.parent(y);
-          if (in_family(ry)) out.push_back({K::Potential, x, y, l});
-        }
-      }
     for (const Considered& c : m.considered) {
       if (!c.converted) continue;
       for (int v = 0; v < c.vertex; ++v) {
@@ -119,12 +108,12 @@ TEST(Certificates, SpecsEqualABruteForceEnumeration) {
   auto listed = [](const Mesh& m) {
     std::vector<Row> out;
     for (auto& s : certificate_specs(m))
-      if (s.kind == K::Potential || s.kind == K::BallEmpty) out.push_back({s.kind, s.a, s.b, s.rank});
+      if (s.kind == K::BallEmpty) out.push_back({s.kind, s.a, s.b, s.rank});
     std::sort(out.begin(), out.end());
     return out;
   };
   std::mt19937_64 rng(29);
-  std::size_t potential = 0, ball_empty = 0;
+  std::size_t ball_empty = 0;
   for (int trial = 0; trial < 3; ++trial) {
     std::uniform_int_distribution<int> d(-60, 60);
     std::vector<InputPoint> in;
@@ -135,11 +124,86 @@ TEST(Certificates, SpecsEqualABruteForceEnumeration) {
     Mesh m = u.mesh();
     auto want = expected(m);
     EXPECT_EQ(listed(m), want) << "seed 29, trial " << trial << ", construction";
-    for (auto& [k, a, b, l] : want) (k == K::Potential ? potential : ball_empty) += 1;
+    ball_empty += want.size();
     u.insert({Integer(d(rng) + 200), Integer(d(rng))});
     Mesh m2 = u.mesh();
     EXPECT_EQ(listed(m2), expected(m2)) << "seed 29, trial " << trial << ", after an insertion";
   }
-  EXPECT_GT(potential, 0u);
   EXPECT_GT(ball_empty, 0u);
+}
+
+// Potential-neighbour certificates against their definition (§4.1.2, Gao–Guibas–Nguyen): one for
+// every rank ℓ < top_rank and every two ℓ-centers x, y (top ≥ ℓ) more than c·2^ℓ apart whose
+// parents at rank ℓ+1 (rep(·, ℓ+1): the vertex itself if it is an (ℓ+1)-center) are the same or
+// within c·2^(ℓ+1) of each other. Decided from the distances and the parent pointers only, at every
+// rank where both are centers — not from the neighbour lists (which have gaps between λ_x and
+// top(x), and none below λ_x), as the old half of SpecsEqualABruteForceEnumeration did. Below the
+// lowest rank with a neighbour pair minus one, no two parents are neighbours: the ranks are finite.
+TEST(Certificates, PotentialNeighbourCertificatesEqualTheirDefinition) {
+  using K = Certificate::Kind;
+  using Row = std::tuple<int, int, Rank>;
+  auto expected = [](const Mesh& m) {
+    const Spanner& S = m.spanner;
+    const int N = static_cast<int>(m.size());
+    Rank low = S.top_rank();  // the lowest rank where two centers are within c·2^ℓ
+    for (int x = 0; x < N; ++x)
+      for (int y = x + 1; y < N; ++y)
+        low = std::min(low, std::min({min_rank_within(S.position(x), S.position(y), kC), S.top(x), S.top(y)}));
+    std::vector<Row> out;
+    for (Rank l = low - 1; l < S.top_rank(); ++l)
+      for (int x = 0; x < N; ++x) {
+        if (S.top(x) < l) continue;
+        for (int y = x + 1; y < N; ++y) {
+          if (S.top(y) < l || within(S.position(x), S.position(y), kC, l)) continue;
+          const int rx = S.rep(x, l + 1), ry = S.rep(y, l + 1);
+          if (rx == ry || within(S.position(rx), S.position(ry), kC, l + 1)) out.push_back({x, y, l});
+        }
+      }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  auto listed = [](const Mesh& m) {
+    std::vector<Row> out;
+    for (auto& s : certificate_specs(m))
+      if (s.kind == K::Potential) out.push_back({std::min(s.a, s.b), std::max(s.a, s.b), s.rank});
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  auto diff = [](const std::vector<Row>& got, const std::vector<Row>& want) {
+    std::vector<Row> missing, extra;
+    std::set_difference(want.begin(), want.end(), got.begin(), got.end(), std::back_inserter(missing));
+    std::set_difference(got.begin(), got.end(), want.begin(), want.end(), std::back_inserter(extra));
+    std::string s = std::to_string(missing.size()) + " missing, " + std::to_string(extra.size()) + " extra";
+    if (!missing.empty())
+      s += "; first missing: (" + std::to_string(std::get<0>(missing[0])) + ", " + std::to_string(std::get<1>(missing[0])) +
+           ") at rank " + std::to_string(std::get<2>(missing[0]));
+    return s;
+  };
+  std::size_t total = 0;
+  // Two points 3 apart (both activate at −2: at −3 they are cousins, 3 > 20·2^−3, and neither has a
+  // list there), then random ones, constructed and updated.
+  {
+    Mesh m = construct({{Integer(0), Integer(0)}, {Integer(3), Integer(0)}});
+    auto want = expected(m), got = listed(m);
+    EXPECT_TRUE(got == want) << "two points: " << diff(got, want);
+    total += want.size();
+  }
+  std::mt19937_64 rng(41);
+  for (int trial = 0; trial < 3; ++trial) {
+    std::uniform_int_distribution<int> d(-60, 60);
+    std::vector<InputPoint> in;
+    for (int i = 0; i < 3 + trial; ++i) in.push_back({Integer(d(rng)), Integer(d(rng))});
+    std::sort(in.begin(), in.end());
+    in.erase(std::unique(in.begin(), in.end()), in.end());
+    Updater u(in);
+    Mesh m = u.mesh();
+    auto want = expected(m), got = listed(m);
+    EXPECT_TRUE(got == want) << "seed 41, trial " << trial << ", construction: " << diff(got, want);
+    total += want.size();
+    u.insert({Integer(d(rng) + 200), Integer(d(rng))});
+    Mesh m2 = u.mesh();
+    auto want2 = expected(m2), got2 = listed(m2);
+    EXPECT_TRUE(got2 == want2) << "seed 41, trial " << trial << ", after an insertion: " << diff(got2, want2);
+  }
+  EXPECT_GT(total, 0u);
 }

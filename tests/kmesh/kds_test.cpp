@@ -79,20 +79,22 @@ TEST(KineticMesh, InsertionsAndDeletionsOfMovingPoints) {
 namespace {
 
 // A certificate as a comparable record: kind, rank, strictness, its ends (unordered for the
-// symmetric kinds) and its polynomial up to a positive factor (primitive part). A ball-not-empty
-// certificate is compared by its satellite's nucleus and rank only: its witness is any vertex of
-// rank ≤ ℓ in the ball (the kept one stays while it is in the ball; the recomputation takes the
-// nearest now), and each kept one must hold now.
-using Record = std::tuple<int, Rank, bool, int, int, std::string>;
+// symmetric kinds), the ray of a ball-not-empty certificate's satellite, and its polynomial up to
+// a positive factor (primitive part). A ball-not-empty certificate is compared by its satellite (nucleus, ray,
+// rank) only: its witness is any vertex of rank ≤ ℓ in the ball (the kept one stays while it is in
+// the ball; the recomputation takes the nearest now), and each kept one must hold now. (Its ends are
+// not ordered before the witness is dropped: a witness changing from below the nucleus's id to above
+// it must not change the record — that made the records differ on a valid run, kmesh17.)
+using Record = std::tuple<int, Rank, bool, int, int, int, std::string>;
 
 std::multiset<Record> records(const std::vector<Certificate>& cs) {
   std::multiset<Record> out;
   for (auto& c : cs) {
     int a = c.a, b = c.b;
-    if (c.kind != Certificate::ParentChild && c.kind != Certificate::Delaunay && a > b) std::swap(a, b);
     std::string p = c.value.is_zero() ? "0" : c.value.primitive_part().to_string();
     if (c.kind == Certificate::BallNotEmpty) b = -1, p = "";
-    out.insert({c.kind, c.rank, c.strict, a, b, p});
+    else if (c.kind != Certificate::ParentChild && c.kind != Certificate::Delaunay && a > b) std::swap(a, b);
+    out.insert({c.kind, c.rank, c.strict, a, b, c.ray, p});
   }
   return out;
 }
@@ -224,4 +226,70 @@ TEST(KineticMesh, L4_3_1_LocalDelaunayRepairEqualsTheFromScratchTriangulation) {
     FlipCount c = compare_every_batch(k, Dyadic(1));
     std::cout << "three moving points: " << a.batches + b.batches + c.batches << " batches\n";
   }
+}
+
+namespace {
+
+// Every kept certificate holds at k.now() (L4.3.1); "" or the first that does not.
+std::string first_failing_now(const KineticMesh& k) {
+  for (auto& c : k.current_certificates())
+    if (!holds_at(c, Dyadic(0)))
+      return std::string(kind_name(c.kind)) + " certificate of " + std::to_string(c.a) + ", " + std::to_string(c.b) +
+             " (rank " + std::to_string(c.rank) + ") fails at " + k.now().to_decimal();
+  return "";
+}
+
+// Certificates violated where they vanish (strict, not Delaunay: holds_at), whose polynomial (of t − now)
+// vanishes at dt > 0: counted independently of the KDS's scheduling, from the exact sign.
+int strict_vanishing_at(const std::vector<Certificate>& cs, const Dyadic& dt) {
+  int n = 0;
+  for (auto& c : cs)
+    if (c.strict && c.kind != Certificate::Delaunay && c.value.degree() > 0 && c.value.sign_at(dt) == 0) ++n;
+  return n;
+}
+
+}  // namespace
+
+// A strict certificate (separation, potential-neighbour, ball-empty) whose polynomial vanishes at a
+// lattice time t is violated at t itself: it fails in the interval ending at t and must be repaired
+// by the batch processed at t — also when t is the horizon of run_until (§4.3, L4.3.1 at every
+// lattice time). (161, 0) moves towards (0, 0) at speed 1, lattice 2^−4: their potential-neighbour
+// certificate at rank 3 (|xy| > 20·2^3 = 160), and about 50 other strict ones between their
+// satellites, vanish at t = 1; only one batch (at 1/4) comes before. run_until is called a quarter
+// at a time; after every call and every batch every kept certificate must hold at now().
+TEST(KineticMesh, L4_3_1_StrictCertificateVanishingAtTheHorizonIsRepairedThere) {
+  RecordProperty("claim", "L4.3.1");
+  KineticMesh k({mv(0, 0), mv(161, 0, -1, 0)}, 4);
+  int vanishing = 0;  // strict certificates vanishing at the end of a step (the case under test)
+  for (int step = 1; step <= 5; ++step) {
+    const Dyadic T(step, -2);
+    vanishing += strict_vanishing_at(k.current_certificates(), T - k.now());
+    k.run_until(T, [&](const Batch& b) { EXPECT_EQ(first_failing_now(k), "") << "batch at " << b.time.to_decimal(); });
+    EXPECT_EQ(k.now(), T);
+    EXPECT_EQ(first_failing_now(k), "") << "after run_until(" << T.to_decimal() << ")";
+  }
+  EXPECT_GE(vanishing, 1) << "the input has no strict certificate vanishing at a step's end";
+  std::cout << "strict certificates vanishing at the end of a step: " << vanishing << "\n";
+}
+
+// A name comparison of kept and recomputed certificates reported a difference on this valid run
+// (kmr kmesh --check exit 1): (0, 0), (4, 0) moving (0, 1) and (9, 7) at rest; (3, 3) moving (1, 0)
+// inserted at 1/8, (9, 7) deleted at 1/4, lattice 2^−3. From the batch at 1/4 on, 8 satellites
+// keep a valid witness other than the nearest: e.g. the rank-2 satellite (0, 1/4) of (4, 1/4) (ray
+// 12) keeps (0, 0), id 0, while its nearest is (0, 0)'s own satellite at (0, 1/4), id 7 > 2, its
+// nucleus's id; ordering a ball-not-empty certificate's ends before dropping the witness changed its
+// name. After every batch and update the kept certificates must equal the recomputation.
+TEST(KineticMesh, L4_3_1_KeptCertificatesEqualTheRecomputationAfterAnInsertionAndADeletion) {
+  RecordProperty("claim", "L4.3.1");
+  KineticMesh k({mv(0, 0), mv(4, 0, 0, 1), mv(9, 7)}, 3);
+  auto each = [&](const Batch& b) { EXPECT_EQ(incremental_vs_recomputed(k), "") << "batch at " << b.time.to_decimal(); };
+  k.run_until(Dyadic(1, -3), each);
+  EXPECT_EQ(incremental_vs_recomputed(k), "") << "at 1/8";
+  k.insert(mv(3, 3, 1, 0));
+  EXPECT_EQ(incremental_vs_recomputed(k), "") << "after the insertion at 1/8";
+  k.run_until(Dyadic(1, -2), each);
+  EXPECT_EQ(incremental_vs_recomputed(k), "") << "at 1/4";
+  k.erase(mv(9, 7));
+  EXPECT_EQ(incremental_vs_recomputed(k), "") << "after the deletion at 1/4";
+  EXPECT_EQ(failures(check_all_updated(k.mesh())), "");
 }

@@ -56,3 +56,26 @@ TEST(RebuildSimulation, InsertAndDeleteRebuildWithStability) {
   sim.erase({Integer(40), Integer(3)});
   EXPECT_EQ(sim.snapshot().n(), 2u);
 }
+
+// A strict certificate whose polynomial vanishes at a lattice time t is violated at t: the batch
+// processed at t must include it, also when t is the horizon of run_until (kmesh/certificates.hpp,
+// failure_batch). (161, 0) moves towards (0, 0) at speed 1, lattice 2^−4: their potential-neighbour
+// certificate at rank 3 (|xy| > 20·2^3) and others vanish at t = 1. A quarter at a time, every
+// certificate must hold at now() after every call.
+TEST(RebuildSimulation, L4_3_1_StrictCertificateVanishingAtTheHorizonIsRepairedThere) {
+  RecordProperty("claim", "L4.3.1");
+  RebuildSimulation sim({{Integer(0), Integer(0)}, {Integer(161), Integer(0), Integer(-1), Integer(0)}}, 4);
+  int vanishing = 0;
+  for (int step = 1; step <= 5; ++step) {
+    const Dyadic T(step, -2);
+    for (auto& c : sim.current_certificates())
+      if (c.strict && c.kind != Certificate::Delaunay && c.value.degree() > 0 && c.value.sign_at(T - sim.snapshot_time()) == 0)
+        ++vanishing;
+    sim.run_until(T);
+    EXPECT_EQ(sim.now(), T);
+    for (auto& c : sim.current_certificates())
+      EXPECT_TRUE(holds_at(c, sim.now() - sim.snapshot_time()))
+          << kind_name(c.kind) << " certificate of " << c.a << ", " << c.b << " (rank " << c.rank << ") fails at " << T.to_decimal();
+  }
+  EXPECT_GE(vanishing, 1);
+}
