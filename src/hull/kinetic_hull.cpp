@@ -632,6 +632,17 @@ std::vector<int> KineticHull::vertices() const {
   return v;
 }
 
+void KineticHull::check_simulator_counts() const {
+  KMR_CHECK(sim_ != nullptr, "check_simulator_counts on a from-scratch reference");
+  const kinetic::SimulatorCounters& c = sim_->counters();
+  KMR_CHECK(counters_.certificates_created == c.created,
+            "kinetic hull: " + std::to_string(counters_.certificates_created) + " certificates created, the simulator created " +
+                std::to_string(c.created));
+  KMR_CHECK(static_cast<long long>(live_certificates()) == c.live(),
+            "kinetic hull: " + std::to_string(live_certificates()) + " live certificates, the simulator holds " +
+                std::to_string(c.live()));
+}
+
 std::vector<KineticHull::CertificateKey> KineticHull::certificate_keys() const {
   std::vector<CertificateKey> k;
   certs_.for_each([&](const CertificateKey& key, const Registration&) { k.push_back(key); });
