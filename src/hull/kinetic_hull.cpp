@@ -265,15 +265,15 @@ void initial_hull(KH* kh, Mod<Roots>* roots, int a, int b, int c, int d, int sid
   kh->rt().write(roots, r);
 }
 
-const Label& label_of(KH::Test t) {
+}  // namespace
+
+const sac::Label& KineticHull::certificate_label(Test t) {
   switch (t) {
-    case KH::Test::initial: return kCertInitial;
-    case KH::Test::visible: return kCertVisible;
+    case Test::initial: return kCertInitial;
+    case Test::visible: return kCertVisible;
     default: return kCertSide;
   }
 }
-
-}  // namespace
 
 KineticHull::KineticHull(std::vector<MovingPoint> points, kinetic::MotionSimulator& sim, std::uint64_t seed,
                          std::vector<bool> present)
@@ -307,6 +307,9 @@ void KineticHull::start() {
   const double n = static_cast<double>(pts_.size());
   const auto expected = static_cast<std::size_t>(6 * n * std::log2(std::max(2.0, n)));
   certs_.reserve(expected);
+  // The runtime's key index holds the certificates and, per face, its record, neighbour and killer
+  // boxes: ≈ 1.6 keys per certificate (n = 20 / 40), about `expected`: sized once, no doubling.
+  rt_.reserve_keys(expected);
   if (sim_) {
     if (by_sim_.capacity() < by_sim_.size() + expected)
       by_sim_.reserve(std::max(by_sim_.size() + expected, 2 * by_sim_.capacity()));
@@ -408,7 +411,11 @@ void KineticHull::index_certificate(const CertificateKey& key, bool add) {
 }
 
 void KineticHull::register_sim(kinetic::CertificateId id, CertificateMod* cert) {
-  if (by_sim_.size() <= id) by_sim_.resize(id + 1, nullptr);
+  if (id == by_sim_.size()) {  // the common case: ids are sequential
+    by_sim_.push_back(cert);
+    return;
+  }
+  if (by_sim_.size() < id) by_sim_.resize(id + 1, nullptr);
   by_sim_[id] = cert;
 }
 
@@ -559,14 +566,14 @@ std::string KineticHull::describe(Test test, int a, int b, int c, int d) const {
 // registration: nothing is looked up. A new traceable is initialised by init_certificate.
 sac::Mod<int>* KineticHull::certificate(Test test, int a, int b, int c, int d) {
   return rt_.owned<int, CertificateRecord>(
-      label_of(test), this, [](void* kh, CertificateMod* m) { static_cast<KineticHull*>(kh)->certificate_released(m); },
+      certificate_label(test), this, [](void* kh, CertificateMod* m) { static_cast<KineticHull*>(kh)->certificate_released(m); },
       [&](CertificateMod& m) { init_certificate(m, test, a, b, c, d); }, a, b, c, d);
 }
 
 void KineticHull::init_certificate(CertificateMod& m, Test test, int a, int b, int c, int d) {
   const CertificateKey key{static_cast<int>(test), a, b, c, d};
-  decltype(certs_)::Probe probe;  // one hash and one probe for the lookup and the insert
-  if (Registration* it = certs_.find(key, probe)) {  // re-created under its key before its predecessor's
+  decltype(certs_)::Probe probe;  // one probe for the lookup and the insert, hashed by m's name (its key's)
+  if (Registration* it = certs_.find(key, decltype(certs_)::Hashed{m.name}, probe)) {  // re-created under its key before its predecessor's
     m.value = it->cert->value;  // release: the simulator keeps its certificate (the same outcome)
     it->cert->payload.current = false;
     it->cert = &m;
@@ -593,13 +600,14 @@ void KineticHull::init_certificate(CertificateMod& m, Test test, int a, int b, i
 void KineticHull::certificate_released(CertificateMod* m) {
   if (!m->payload.current) return;  // a successor's registration
   const CertificateKey key = m->payload.key;
-  const Registration* it = certs_.find(key);
+  const decltype(certs_)::Hashed h{m->name};  // its allocation name: the table's hash of key
+  const Registration* it = certs_.find(key, h);
   KMR_CHECK(it != nullptr && it->cert == m, "kinetic hull: a released certificate is not registered");
   if (sim_) {
     sim_->remove(it->sim);
     by_sim_[it->sim] = nullptr;
   }
-  certs_.erase(key);
+  certs_.erase(key, h);
   index_certificate(key, false);
 }
 

@@ -129,6 +129,7 @@ class KineticHull {
     bool current = false;
   };
   using CertificateMod = sac::OwnedMod<int, CertificateRecord>;
+  static const sac::Label& certificate_label(Test t);  // the allocation label of a test's certificates
   // Inside runs: the certificate of a test (created, or reused with its trace).
   sac::Mod<int>* certificate(Test test, int a, int b, int c, int d);
   void face_created(FaceH f, sac::HookId hook);
@@ -208,7 +209,15 @@ class KineticHull {
       return static_cast<std::size_t>(sac::mix(h, N));
     }
   };
-  KeyTable<CertificateKey, Registration, KeyHash> certs_;  // live certificates
+  // The live certificates, hashed by their traceables' allocation name (sac::alloc_name of the
+  // certificate's label and points): init_certificate and certificate_released pass the name their
+  // traceable already holds (KeyTable::Hashed) instead of hashing the key a second time.
+  struct CertificateHash {
+    std::uint64_t operator()(const CertificateKey& k) const {
+      return sac::alloc_name(certificate_label(static_cast<Test>(k[0])), k[1], k[2], k[3], k[4]);
+    }
+  };
+  KeyTable<CertificateKey, Registration, CertificateHash> certs_;  // live certificates
   std::vector<CertificateMod*> by_sim_;  // simulator id → the traceable holding its key, or null
   KeyTable<std::array<int, 3>, std::pair<FaceH, sac::HookId>, KeyHash> faces_;  // live faces by vertices
   KineticCounters counters_;
