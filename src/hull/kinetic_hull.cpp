@@ -526,21 +526,34 @@ void KineticHull::set_present(int x, bool on) {
 void KineticHull::remove_point(int x) { set_present(x, false); }
 void KineticHull::insert_point(int x) { set_present(x, true); }
 
-KineticHull::CertificatePolynomial KineticHull::polynomial(Test test, int a, int b, int c, int d) const {
-  CertificatePolynomial r;
+bool KineticHull::machine_polynomial(Test test, int a, int b, int c, int d, poly::MachinePolynomial& out) const {
   const auto& M = machine_;
   switch (test) {
     case Test::initial:
-      if (M[a] && M[b] && M[c] && M[d]) r.machine = orientation_polynomial(*M[a], *M[b], *M[c], *M[d]);
-      else r.exact = orientation_polynomial(pts_[a], pts_[b], pts_[c], pts_[d]);
-      break;
+      if (!(M[a] && M[b] && M[c] && M[d])) return false;
+      out = orientation_polynomial(*M[a], *M[b], *M[c], *M[d]);
+      return true;
     case Test::visible:  // face bcd, point a
-      if (M[a] && M[b] && M[c] && M[d]) r.machine = orientation_polynomial(*M[b], *M[c], *M[d], *M[a]);
-      else r.exact = orientation_polynomial(pts_[b], pts_[c], pts_[d], pts_[a]);
-      break;
+      if (!(M[a] && M[b] && M[c] && M[d])) return false;
+      out = orientation_polynomial(*M[b], *M[c], *M[d], *M[a]);
+      return true;
     default:  // point a, side (b, c, centre)
-      if (M[a] && M[b] && M[c] && machine_centre_) r.machine = centre_side_polynomial(*M[b], *M[c], *M[a], *machine_centre_);
-      else r.exact = centre_side_polynomial(pts_[b], pts_[c], pts_[a], centre_sum_);
+      if (!(M[a] && M[b] && M[c] && machine_centre_)) return false;
+      out = centre_side_polynomial(*M[b], *M[c], *M[a], *machine_centre_);
+      return true;
+  }
+}
+
+KineticHull::CertificatePolynomial KineticHull::polynomial(Test test, int a, int b, int c, int d) const {
+  CertificatePolynomial r;
+  if (poly::MachinePolynomial mp; machine_polynomial(test, a, b, c, d, mp)) {
+    r.machine = mp;
+    return r;
+  }
+  switch (test) {
+    case Test::initial: r.exact = orientation_polynomial(pts_[a], pts_[b], pts_[c], pts_[d]); break;
+    case Test::visible: r.exact = orientation_polynomial(pts_[b], pts_[c], pts_[d], pts_[a]); break;  // face bcd, point a
+    default: r.exact = centre_side_polynomial(pts_[b], pts_[c], pts_[a], centre_sum_);  // point a, side (b, c, centre)
   }
   return r;
 }
@@ -579,15 +592,26 @@ void KineticHull::init_certificate(CertificateMod& m, Test test, int a, int b, i
     it->cert = &m;
     if (sim_) register_sim(it->sim, &m);
   } else {
-    CertificatePolynomial P = polynomial(test, a, b, c, d);
-    if (P.is_zero()) throw InputError(describe(test, a, b, c, d));
     kinetic::CertificateId sid = 0;
-    if (sim_) {
-      sid = P.machine ? sim_->add(*P.machine) : sim_->add(P.exact);
+    poly::MachinePolynomial mp;
+    if (sim_ && machine_polynomial(test, a, b, c, d, mp)) {
+      // The common case: the machine cubic goes straight to the simulator, with no Polynomial
+      // built (not even an empty one) per certificate; the simulator builds the exact polynomial
+      // from it if its filter leaves a decision open (MotionSimulator::exact_of).
+      if (mp.is_zero()) throw InputError(describe(test, a, b, c, d));
+      sid = sim_->add(mp);
       m.value = sim_->outcome(sid);
       ++counters_.certificates_created;
     } else {
-      m.value = sign_before_t(P);
+      CertificatePolynomial P = polynomial(test, a, b, c, d);
+      if (P.is_zero()) throw InputError(describe(test, a, b, c, d));
+      if (sim_) {
+        sid = P.machine ? sim_->add(*P.machine) : sim_->add(P.exact);
+        m.value = sim_->outcome(sid);
+        ++counters_.certificates_created;
+      } else {
+        m.value = sign_before_t(P);
+      }
     }
     certs_.insert(key, Registration{&m, sid}, probe);  // (nothing inserted or erased since the probe)
     index_certificate(key, true);

@@ -155,6 +155,8 @@ class KineticHull {
     bool is_zero() const { return machine ? machine->is_zero() : exact.is_zero(); }
   };
   CertificatePolynomial polynomial(Test test, int a, int b, int c, int d) const;
+  // The machine form alone (false, out untouched, when a point or the centre has none).
+  bool machine_polynomial(Test test, int a, int b, int c, int d, poly::MachinePolynomial& out) const;
   int sign_before_t(const CertificatePolynomial& p) const;  // outcome in a from-scratch reference run
   // The machine form of point x, then refresh_machine_centre (start() fills machine_ for all points).
   void refresh_machine_point(int x);
