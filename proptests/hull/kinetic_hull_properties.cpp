@@ -75,6 +75,7 @@ RC_GTEST_PROP(KineticHullProperties, C2_2_EveryBatchMatchesStaticAndScratch, ())
       RC_ASSERT(kh.signature() == scratch.signature());
       RC_ASSERT(kh.certificate_keys() == scratch.certificate_keys());
       RC_ASSERT(kh.live_certificates() == static_cast<std::size_t>(sim.counters().live()));
+      RC_ASSERT(kh.counters().certificates_created == sim.counters().created);
       auto batch = sim.next_batch(until);
       if (!batch) break;
       kh.update(*batch);
@@ -113,6 +114,7 @@ struct Sut {
     RC_ASSERT(kh->signature() == scratch.signature());
     RC_ASSERT(kh->certificate_keys() == scratch.certificate_keys());
     RC_ASSERT(kh->live_certificates() == static_cast<std::size_t>(sim->counters().live()));
+    RC_ASSERT(kh->counters().certificates_created == sim->counters().created);
   }
   template <class F>
   void act(F&& f) {

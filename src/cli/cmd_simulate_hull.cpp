@@ -58,6 +58,7 @@ int simulate_hull_command(const Argv& argv) {
   long long checks = 0;
   auto check = [&](long long batch) {
     auto c = clock::now();
+    kh.check_simulator_counts();  // the hull's certificate counts equal the simulator's (else exit 3)
     auto facets = kh.facets();
     auto expected = hull::static_hull_before(kh.points(), sim.now());
     std::string failure = facets == expected ? hull::hull_certificate_failure(kh.points(), sim.now(), facets)

@@ -32,9 +32,15 @@ class KeyTable {
   std::size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
 
-  V* find(const K& k) {
+  // A key's hash computed by the caller (it must equal Hash{}(k)): find, find with a probe and erase
+  // take it instead of hashing again (the kinetic hull's certificates: the runtime's allocation name).
+  struct Hashed {
+    std::uint64_t value;
+  };
+  V* find(const K& k) { return find(k, Hashed{Hash{}(k)}); }
+  V* find(const K& k, Hashed hk) {
     if (slots_.empty()) return nullptr;
-    const std::uint32_t h = hash(k);
+    const auto h = static_cast<std::uint32_t>(hk.value);
     for (std::size_t i = h & mask();; i = next(i)) {
       Slot& s = slots_[i];
       if (!s.full) return nullptr;
@@ -48,8 +54,9 @@ class KeyTable {
     std::uint32_t hash = 0;
     std::size_t slot = kNoSlot;
   };
-  V* find(const K& k, Probe& probe) {
-    probe = Probe{hash(k), kNoSlot};
+  V* find(const K& k, Probe& probe) { return find(k, Hashed{Hash{}(k)}, probe); }
+  V* find(const K& k, Hashed hk, Probe& probe) {
+    probe = Probe{static_cast<std::uint32_t>(hk.value), kNoSlot};
     if (slots_.empty()) return nullptr;
     for (std::size_t i = probe.hash & mask();; i = next(i)) {
       Slot& s = slots_[i];
@@ -96,9 +103,10 @@ class KeyTable {
     return insert(k, std::move(v), probe);
   }
 
-  bool erase(const K& k) {
+  bool erase(const K& k) { return erase(k, Hashed{Hash{}(k)}); }
+  bool erase(const K& k, Hashed hashed) {
     if (slots_.empty()) return false;
-    const std::uint32_t hk = hash(k);
+    const auto hk = static_cast<std::uint32_t>(hashed.value);
     std::size_t i = hk & mask();
     for (;; i = next(i)) {
       if (!slots_[i].full) return false;

@@ -265,15 +265,15 @@ void initial_hull(KH* kh, Mod<Roots>* roots, int a, int b, int c, int d, int sid
   kh->rt().write(roots, r);
 }
 
-const Label& label_of(KH::Test t) {
+}  // namespace
+
+const sac::Label& KineticHull::certificate_label(Test t) {
   switch (t) {
-    case KH::Test::initial: return kCertInitial;
-    case KH::Test::visible: return kCertVisible;
+    case Test::initial: return kCertInitial;
+    case Test::visible: return kCertVisible;
     default: return kCertSide;
   }
 }
-
-}  // namespace
 
 KineticHull::KineticHull(std::vector<MovingPoint> points, kinetic::MotionSimulator& sim, std::uint64_t seed,
                          std::vector<bool> present)
@@ -307,6 +307,9 @@ void KineticHull::start() {
   const double n = static_cast<double>(pts_.size());
   const auto expected = static_cast<std::size_t>(6 * n * std::log2(std::max(2.0, n)));
   certs_.reserve(expected);
+  // The runtime's key index holds the certificates and, per face, its record, neighbour and killer
+  // boxes: ≈ 1.6 keys per certificate (n = 20 / 40), about `expected`: sized once, no doubling.
+  rt_.reserve_keys(expected);
   if (sim_) {
     if (by_sim_.capacity() < by_sim_.size() + expected)
       by_sim_.reserve(std::max(by_sim_.size() + expected, 2 * by_sim_.capacity()));
@@ -408,7 +411,11 @@ void KineticHull::index_certificate(const CertificateKey& key, bool add) {
 }
 
 void KineticHull::register_sim(kinetic::CertificateId id, CertificateMod* cert) {
-  if (by_sim_.size() <= id) by_sim_.resize(id + 1, nullptr);
+  if (id == by_sim_.size()) {  // the common case: ids are sequential
+    by_sim_.push_back(cert);
+    return;
+  }
+  if (by_sim_.size() < id) by_sim_.resize(id + 1, nullptr);
   by_sim_[id] = cert;
 }
 
@@ -519,21 +526,34 @@ void KineticHull::set_present(int x, bool on) {
 void KineticHull::remove_point(int x) { set_present(x, false); }
 void KineticHull::insert_point(int x) { set_present(x, true); }
 
-KineticHull::CertificatePolynomial KineticHull::polynomial(Test test, int a, int b, int c, int d) const {
-  CertificatePolynomial r;
+bool KineticHull::machine_polynomial(Test test, int a, int b, int c, int d, poly::MachinePolynomial& out) const {
   const auto& M = machine_;
   switch (test) {
     case Test::initial:
-      if (M[a] && M[b] && M[c] && M[d]) r.machine = orientation_polynomial(*M[a], *M[b], *M[c], *M[d]);
-      else r.exact = orientation_polynomial(pts_[a], pts_[b], pts_[c], pts_[d]);
-      break;
+      if (!(M[a] && M[b] && M[c] && M[d])) return false;
+      out = orientation_polynomial(*M[a], *M[b], *M[c], *M[d]);
+      return true;
     case Test::visible:  // face bcd, point a
-      if (M[a] && M[b] && M[c] && M[d]) r.machine = orientation_polynomial(*M[b], *M[c], *M[d], *M[a]);
-      else r.exact = orientation_polynomial(pts_[b], pts_[c], pts_[d], pts_[a]);
-      break;
+      if (!(M[a] && M[b] && M[c] && M[d])) return false;
+      out = orientation_polynomial(*M[b], *M[c], *M[d], *M[a]);
+      return true;
     default:  // point a, side (b, c, centre)
-      if (M[a] && M[b] && M[c] && machine_centre_) r.machine = centre_side_polynomial(*M[b], *M[c], *M[a], *machine_centre_);
-      else r.exact = centre_side_polynomial(pts_[b], pts_[c], pts_[a], centre_sum_);
+      if (!(M[a] && M[b] && M[c] && machine_centre_)) return false;
+      out = centre_side_polynomial(*M[b], *M[c], *M[a], *machine_centre_);
+      return true;
+  }
+}
+
+KineticHull::CertificatePolynomial KineticHull::polynomial(Test test, int a, int b, int c, int d) const {
+  CertificatePolynomial r;
+  if (poly::MachinePolynomial mp; machine_polynomial(test, a, b, c, d, mp)) {
+    r.machine = mp;
+    return r;
+  }
+  switch (test) {
+    case Test::initial: r.exact = orientation_polynomial(pts_[a], pts_[b], pts_[c], pts_[d]); break;
+    case Test::visible: r.exact = orientation_polynomial(pts_[b], pts_[c], pts_[d], pts_[a]); break;  // face bcd, point a
+    default: r.exact = centre_side_polynomial(pts_[b], pts_[c], pts_[a], centre_sum_);  // point a, side (b, c, centre)
   }
   return r;
 }
@@ -559,28 +579,39 @@ std::string KineticHull::describe(Test test, int a, int b, int c, int d) const {
 // registration: nothing is looked up. A new traceable is initialised by init_certificate.
 sac::Mod<int>* KineticHull::certificate(Test test, int a, int b, int c, int d) {
   return rt_.owned<int, CertificateRecord>(
-      label_of(test), this, [](void* kh, CertificateMod* m) { static_cast<KineticHull*>(kh)->certificate_released(m); },
+      certificate_label(test), this, [](void* kh, CertificateMod* m) { static_cast<KineticHull*>(kh)->certificate_released(m); },
       [&](CertificateMod& m) { init_certificate(m, test, a, b, c, d); }, a, b, c, d);
 }
 
 void KineticHull::init_certificate(CertificateMod& m, Test test, int a, int b, int c, int d) {
   const CertificateKey key{static_cast<int>(test), a, b, c, d};
-  decltype(certs_)::Probe probe;  // one hash and one probe for the lookup and the insert
-  if (Registration* it = certs_.find(key, probe)) {  // re-created under its key before its predecessor's
+  decltype(certs_)::Probe probe;  // one probe for the lookup and the insert, hashed by m's name (its key's)
+  if (Registration* it = certs_.find(key, decltype(certs_)::Hashed{m.name}, probe)) {  // re-created under its key before its predecessor's
     m.value = it->cert->value;  // release: the simulator keeps its certificate (the same outcome)
     it->cert->payload.current = false;
     it->cert = &m;
     if (sim_) register_sim(it->sim, &m);
   } else {
-    CertificatePolynomial P = polynomial(test, a, b, c, d);
-    if (P.is_zero()) throw InputError(describe(test, a, b, c, d));
     kinetic::CertificateId sid = 0;
-    if (sim_) {
-      sid = P.machine ? sim_->add(*P.machine) : sim_->add(P.exact);
+    poly::MachinePolynomial mp;
+    if (sim_ && machine_polynomial(test, a, b, c, d, mp)) {
+      // The common case: the machine cubic goes straight to the simulator, with no Polynomial
+      // built (not even an empty one) per certificate; the simulator builds the exact polynomial
+      // from it if its filter leaves a decision open (MotionSimulator::exact_of).
+      if (mp.is_zero()) throw InputError(describe(test, a, b, c, d));
+      sid = sim_->add(mp);
       m.value = sim_->outcome(sid);
       ++counters_.certificates_created;
     } else {
-      m.value = sign_before_t(P);
+      CertificatePolynomial P = polynomial(test, a, b, c, d);
+      if (P.is_zero()) throw InputError(describe(test, a, b, c, d));
+      if (sim_) {
+        sid = P.machine ? sim_->add(*P.machine) : sim_->add(P.exact);
+        m.value = sim_->outcome(sid);
+        ++counters_.certificates_created;
+      } else {
+        m.value = sign_before_t(P);
+      }
     }
     certs_.insert(key, Registration{&m, sid}, probe);  // (nothing inserted or erased since the probe)
     index_certificate(key, true);
@@ -593,13 +624,14 @@ void KineticHull::init_certificate(CertificateMod& m, Test test, int a, int b, i
 void KineticHull::certificate_released(CertificateMod* m) {
   if (!m->payload.current) return;  // a successor's registration
   const CertificateKey key = m->payload.key;
-  const Registration* it = certs_.find(key);
+  const decltype(certs_)::Hashed h{m->name};  // its allocation name: the table's hash of key
+  const Registration* it = certs_.find(key, h);
   KMR_CHECK(it != nullptr && it->cert == m, "kinetic hull: a released certificate is not registered");
   if (sim_) {
     sim_->remove(it->sim);
     by_sim_[it->sim] = nullptr;
   }
-  certs_.erase(key);
+  certs_.erase(key, h);
   index_certificate(key, false);
 }
 
@@ -630,6 +662,17 @@ std::vector<int> KineticHull::vertices() const {
   std::sort(v.begin(), v.end());
   v.erase(std::unique(v.begin(), v.end()), v.end());
   return v;
+}
+
+void KineticHull::check_simulator_counts() const {
+  KMR_CHECK(sim_ != nullptr, "check_simulator_counts on a from-scratch reference");
+  const kinetic::SimulatorCounters& c = sim_->counters();
+  KMR_CHECK(counters_.certificates_created == c.created,
+            "kinetic hull: " + std::to_string(counters_.certificates_created) + " certificates created, the simulator created " +
+                std::to_string(c.created));
+  KMR_CHECK(static_cast<long long>(live_certificates()) == c.live(),
+            "kinetic hull: " + std::to_string(live_certificates()) + " live certificates, the simulator holds " +
+                std::to_string(c.live()));
 }
 
 std::vector<KineticHull::CertificateKey> KineticHull::certificate_keys() const {

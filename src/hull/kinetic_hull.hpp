@@ -87,6 +87,12 @@ class KineticHull {
   std::vector<CertificateKey> certificate_keys() const;  // live certificates, increasing
   std::size_t live_certificates() const { return certs_.size(); }
   const KineticCounters& counters() const { return counters_; }
+  // The hull's certificate bookkeeping agrees with its simulator's (issue 9; a check after each
+  // batch in tests and in `kmr simulate hull --check-every`): every certificate handed to the
+  // simulator was counted once (certificates_created == the simulator's created) and exactly the
+  // live ones are scheduled (live_certificates() == the simulator's live). Else a ContractError
+  // naming both counts. Meaningful when the simulator serves this hull alone, from its start.
+  void check_simulator_counts() const;
   const sac::Runtime& runtime() const { return rt_; }
   const std::vector<MovingPoint>& points() const { return pts_; }
 
@@ -123,6 +129,7 @@ class KineticHull {
     bool current = false;
   };
   using CertificateMod = sac::OwnedMod<int, CertificateRecord>;
+  static const sac::Label& certificate_label(Test t);  // the allocation label of a test's certificates
   // Inside runs: the certificate of a test (created, or reused with its trace).
   sac::Mod<int>* certificate(Test test, int a, int b, int c, int d);
   void face_created(FaceH f, sac::HookId hook);
@@ -148,6 +155,8 @@ class KineticHull {
     bool is_zero() const { return machine ? machine->is_zero() : exact.is_zero(); }
   };
   CertificatePolynomial polynomial(Test test, int a, int b, int c, int d) const;
+  // The machine form alone (false, out untouched, when a point or the centre has none).
+  bool machine_polynomial(Test test, int a, int b, int c, int d, poly::MachinePolynomial& out) const;
   int sign_before_t(const CertificatePolynomial& p) const;  // outcome in a from-scratch reference run
   // The machine form of point x, then refresh_machine_centre (start() fills machine_ for all points).
   void refresh_machine_point(int x);
@@ -202,7 +211,15 @@ class KineticHull {
       return static_cast<std::size_t>(sac::mix(h, N));
     }
   };
-  KeyTable<CertificateKey, Registration, KeyHash> certs_;  // live certificates
+  // The live certificates, hashed by their traceables' allocation name (sac::alloc_name of the
+  // certificate's label and points): init_certificate and certificate_released pass the name their
+  // traceable already holds (KeyTable::Hashed) instead of hashing the key a second time.
+  struct CertificateHash {
+    std::uint64_t operator()(const CertificateKey& k) const {
+      return sac::alloc_name(certificate_label(static_cast<Test>(k[0])), k[1], k[2], k[3], k[4]);
+    }
+  };
+  KeyTable<CertificateKey, Registration, CertificateHash> certs_;  // live certificates
   std::vector<CertificateMod*> by_sim_;  // simulator id → the traceable holding its key, or null
   KeyTable<std::array<int, 3>, std::pair<FaceH, sac::HookId>, KeyHash> faces_;  // live faces by vertices
   KineticCounters counters_;

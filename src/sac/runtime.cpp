@@ -322,17 +322,7 @@ void Runtime::index(Node* n, ModBase* anchor) {
     l->hpprev = &anchor->keyed;
     return;
   }
-  if (indexed_ + 1 > buckets_.size()) {
-    std::vector<Node*> old(buckets_.size() * 2, nullptr);
-    old.swap(buckets_);
-    indexed_ = 0;
-    for (Node* b : old)
-      for (Node* k = b; k;) {
-        Node* nx = key_link(k)->hnext;
-        index(k, nullptr);
-        k = nx;
-      }
-  }
+  if (indexed_ + 1 > buckets_.size()) rehash(buckets_.size() * 2);
   Node** b = &buckets_[l->hash & (buckets_.size() - 1)];
   l->hnext = *b;
   if (*b) key_link(*b)->hpprev = &l->hnext;
@@ -340,6 +330,33 @@ void Runtime::index(Node* n, ModBase* anchor) {
   l->hpprev = b;
   set_in_table(n, true);
   ++indexed_;
+}
+
+// Moves every table entry into `size` buckets (a power of two): one pass, each node relinked in
+// place (chain order is lookup-only: find_alloc/find_memo pick the earliest match by time).
+void Runtime::rehash(std::size_t size) {
+  std::vector<Node*> old(size, nullptr);
+  old.swap(buckets_);
+  for (Node* head : old)
+    for (Node* k = head; k;) {
+      KeyLink* l = key_link(k);
+      Node* nx = l->hnext;
+      Node** b = &buckets_[l->hash & (size - 1)];
+      l->hnext = *b;
+      if (*b) key_link(*b)->hpprev = &l->hnext;
+      *b = k;
+      l->hpprev = b;
+      k = nx;
+    }
+}
+
+void Runtime::reserve_keys(std::size_t n) {
+  KMR_CHECK(n <= (std::size_t{1} << 40), "sac: reserve_keys beyond 2^40 keys");
+  std::size_t size = buckets_.size();
+  while (size < n) size *= 2;
+  if (size <= buckets_.size()) return;
+  if (indexed_ == 0) buckets_.assign(size, nullptr);  // nothing to move
+  else rehash(size);
 }
 
 void Runtime::unindex(Node* n) {
@@ -365,7 +382,7 @@ void Runtime::rerun(ReadNode* r) {
     }
   }
   {
-    FreshScope fs(*this, read_scope(r->mod), open);
+    FreshScope fs(*this, static_cast<const ModBase*>(r->mod), open);
     r->rerun();
   }
   discard(now_, r->end);  // what was not reused inside r's interval
@@ -375,7 +392,7 @@ void Runtime::first_run(MemoReadNode* m, ModBase* src, ModBase* anchor) {
   m->mod = src;
   link_reader(m, &src->readers);
   {
-    FreshScope fs(*this, read_scope(src), m);
+    FreshScope fs(*this, static_cast<const ModBase*>(src), m);
     m->rerun();
   }
   m->end = append(make_node<EndNode>());

@@ -109,6 +109,16 @@ std::uint64_t canon_key(const std::tuple<A...>& t) {
   return h;
 }
 
+// The name of a keyed allocation (alloc, ialloc, traceable, owned) under (label, keys...): its
+// modifiable's `name` and its key-index hash. Public so that an owner can index its own records
+// by the same hash instead of hashing the key again (the kinetic hull's certificates, issue 9).
+template <class... K>
+std::uint64_t alloc_name(const Label& label, const K&... keys) {
+  std::uint64_t h = label.hash;
+  ((h = mix(h, canon_key(keys))), ...);
+  return h;
+}
+
 // value_hash(x): a 64-bit digest of a written value or memo result for the signature (§1.3.1
 // from-scratch comparison: a stale value under an unchanged name must show). Canonical like
 // canon_key (modifiables by name); extend with an ADL overload `std::uint64_t canon_value(const T&)`.
@@ -498,7 +508,7 @@ class Runtime {
     r->mod = m;
     link_reader(r, &m->readers);
     {
-      FreshScope fs(*this, read_scope(m));
+      FreshScope fs(*this, static_cast<const ModBase*>(m));
       r->k(static_cast<const T&>(m->value));
     }
     r->end = append(make_node<EndNode>());
@@ -557,7 +567,7 @@ class Runtime {
     r->flag = true;
     link_reader(r, &v->readers);
     {
-      FreshScope fs(*this, read_scope(m));
+      FreshScope fs(*this, static_cast<const ModBase*>(m));
       r->k(*static_cast<const T*>(v->value));
     }
     r->end = append(make_node<EndNode>());
@@ -647,7 +657,7 @@ class Runtime {
   M* fresh_impl(const Label& label) {
     inside("fresh");
     auto* m = make_mod<M>();
-    m->name = mix(mix(label.hash, scope_), fresh_ordinal_++);
+    m->name = mix(mix(label.hash, scope_read_ ? read_scope(scope_read_) : scope_), fresh_ordinal_++);
     ++live_owned_;
     ++stats_.fresh_allocs;
     AllocNode* a = make_node<AllocNode>();
@@ -667,8 +677,7 @@ class Runtime {
     inside("alloc");
     using A = AllocImpl<std::tuple<std::decay_t<K>...>>;
     static_assert(std::is_trivially_destructible_v<A>, "sac: allocation keys must be trivially destructible");
-    std::uint64_t h = label.hash;
-    ((h = mix(h, canon_key(keys))), ...);
+    const std::uint64_t h = alloc_name(label, keys...);
     ModBase* anchor = nullptr;
     ((anchor = anchor ? anchor : anchor_one(keys)), ...);
     std::tuple<std::decay_t<K>...> key(keys...);
@@ -814,6 +823,10 @@ class Runtime {
   std::size_t queued() const { return heap_.size(); }
   const OrderList& order() const { return om_; }
   void reset();  // discards the whole trace (undo hooks run); inputs stay
+  // Room in the key index for n keys without an anchor (allocations and memo calls keyed by plain
+  // values): the table takes its size for n at once instead of doubling (and rehashing) on the
+  // way. Lookup only: changes no result, signature or count (issue 9, the kinetic hull's start).
+  void reserve_keys(std::size_t n);
 
  private:
   template <class T, class F>
@@ -895,21 +908,31 @@ class Runtime {
       rt.finger_ = finger;
     }
   };
-  struct FreshScope {  // names fresh allocations by their enclosing read or memo call; sets open_
+  // Names fresh allocations by their enclosing read or memo call; sets open_. A read's scope name
+  // read_scope(m) is computed only if a fresh allocation asks for it (scope_read_ holds m): most
+  // reads allocate nothing fresh, and the mix per read was ≈ 1.5 % of the kinetic hull's initial
+  // run (issue 9). The names are the same either way.
+  struct FreshScope {
     Runtime& rt;
     std::uint64_t scope;
+    const ModBase* scope_read;
     std::uint32_t ordinal;
     MemoReadNode* open;
-    FreshScope(Runtime& r, std::uint64_t s, MemoReadNode* o = nullptr)
-        : rt(r), scope(r.scope_), ordinal(r.fresh_ordinal_), open(r.open_) {
-      rt.scope_ = s;
-      rt.fresh_ordinal_ = 0;
-      rt.open_ = o;
-    }
+    FreshScope(Runtime& r, std::uint64_t s, MemoReadNode* o = nullptr) : FreshScope(r, o) { rt.scope_ = s; }
+    FreshScope(Runtime& r, const ModBase* read, MemoReadNode* o = nullptr) : FreshScope(r, o) { rt.scope_read_ = read; }
     ~FreshScope() {
       rt.scope_ = scope;
+      rt.scope_read_ = scope_read;
       rt.fresh_ordinal_ = ordinal;
       rt.open_ = open;
+    }
+
+   private:
+    FreshScope(Runtime& r, MemoReadNode* o)
+        : rt(r), scope(r.scope_), scope_read(r.scope_read_), ordinal(r.fresh_ordinal_), open(r.open_) {
+      rt.scope_read_ = nullptr;
+      rt.fresh_ordinal_ = 0;
+      rt.open_ = o;
     }
   };
   static std::uint64_t read_scope(const ModBase* m) { return mix(m->name, 0x52ead); }
@@ -992,6 +1015,7 @@ class Runtime {
     return n->kind == Kind::MemoRead ? static_cast<const ReadNode*>(n)->in_table : n->flag;
   }
   void index(Node* n, ModBase* anchor);
+  void rehash(std::size_t size);  // the table's entries into `size` buckets (a power of two)
   void unindex(Node* n);
   void unindex_all(ModBase* m) {
     while (m->keyed) unindex(m->keyed);
@@ -1068,6 +1092,7 @@ class Runtime {
   bool running_ = false;
   bool in_undo_ = false;
   std::uint64_t scope_ = 0;          // the enclosing read or memo call (fresh allocation names)
+  const ModBase* scope_read_ = nullptr;  // the enclosing read's modifiable (its scope is read_scope of it), or null: scope_
   std::uint32_t fresh_ordinal_ = 0;  // fresh allocations so far in that scope
   std::uint64_t stale_writes_ = 0;   // live writes superseded by an earlier write
   HookId hook_serial_ = 0;

@@ -1,5 +1,6 @@
 // KeyTable (hull/key_table.hpp) against std::map under random insert / erase / find / assign
-// (and find-with-probe then insert-through-the-probe) sequences: after every operation the answers agree, and periodically the whole contents (listed
+// (and find-with-probe then insert-through-the-probe) sequences, every other lookup and erase given
+// the key's hash by the caller (KeyTable::Hashed, as the kinetic hull passes its traceables' names): after every operation the answers agree, and periodically the whole contents (listed
 // by for_each, then sorted) equal the map's. A weak hash forces long probe runs and wrap-around,
 // where backward-shift deletion is exercised; the seed is printed.
 #include <gtest/gtest.h>
@@ -39,13 +40,16 @@ void random_against_map(std::uint64_t seed, int ops, int key_range) {
     const int x = pick(rng);
     return Key{x % 3, x, x / 7, -1, x % 11};
   };
+  using Table = KeyTable<Key, long long, Hash>;
   for (int i = 0; i < ops; ++i) {
     SCOPED_TRACE("seed " + std::to_string(seed) + ", operation " + std::to_string(i));
     const Key k = key();
     const int o = op(rng);
+    const bool hashed = i % 2 == 1;  // the caller's hash (Hashed) instead of the table's own
+    const typename Table::Hashed h{Hash{}(k)};
     if (o < 2) {  // find with a probe, then insert through the probe when absent (else overwrite)
-      typename KeyTable<Key, long long, Hash>::Probe probe;
-      long long* v = t.find(k, probe);
+      typename Table::Probe probe;
+      long long* v = hashed ? t.find(k, h, probe) : t.find(k, probe);
       auto it = m.find(k);
       ASSERT_EQ(v != nullptr, it != m.end());
       if (v) {
@@ -63,9 +67,9 @@ void random_against_map(std::uint64_t seed, int ops, int key_range) {
       }
       m[k] = i;
     } else if (o < 8) {
-      ASSERT_EQ(t.erase(k), m.erase(k) == 1);
+      ASSERT_EQ(hashed ? t.erase(k, h) : t.erase(k), m.erase(k) == 1);
     } else {
-      const long long* v = t.find(k);
+      const long long* v = hashed ? t.find(k, h) : t.find(k);
       auto it = m.find(k);
       ASSERT_EQ(v != nullptr, it != m.end());
       if (v) {

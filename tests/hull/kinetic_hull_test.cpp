@@ -43,6 +43,8 @@ Judged simulate_and_judge(const std::vector<MovingPoint>& pts, int bits, const D
     EXPECT_EQ(kh.signature(), scratch.signature());
     EXPECT_EQ(kh.certificate_keys(), scratch.certificate_keys());
     EXPECT_EQ(kh.live_certificates(), static_cast<std::size_t>(sim.counters().live()));
+    EXPECT_EQ(kh.counters().certificates_created, sim.counters().created);
+    EXPECT_NO_THROW(kh.check_simulator_counts());
   };
   judge();
   while (auto batch = sim.next_batch(until)) {
