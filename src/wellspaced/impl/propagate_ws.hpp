@@ -97,10 +97,12 @@ auto WellSpacedSet<D>::Impl::process(const OpKey& k) -> void {
 
 template <std::size_t D>
 auto WellSpacedSet<D>::Impl::propagate() -> void {
+  std::size_t processed = 0;
   while (!pending.empty()) {
     OpKey k = *pending.begin();
     pending.erase(pending.begin());
     process(k);
+    if (params.progress && ++processed % 1024 == 0) params.progress(vtx.size(), processed);
   }
 }
 
