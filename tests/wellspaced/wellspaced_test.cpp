@@ -317,6 +317,62 @@ TEST(WellspacedInput, RhoTooCloseToOneIsRefused) {
   check_output<2>(three, ws, "rho=1.01");
 }
 
+// The output-size estimate (issue 11 §1; spec/wellspaced.md, "Output-size estimate") is an
+// envelope of measured outputs: on pairs 2^-10 … 1 ulp apart, uniform, clustered and collinear
+// inputs, 2D and 3D, ρ from 1.1 to 4, it is at least |M| and at most 15·|M|, and it counts the
+// construction's own tree (leaves = the squares StableWS builds).
+template <std::size_t D>
+void estimate_case(const std::vector<Point<D>>& input, double rho, double beta, const std::string& what) {
+  Params p;
+  p.rho = rho;
+  p.beta = beta;
+  const OutputEstimate e = estimate_output<D>(input, rho);
+  WellSpacedSet<D> ws(input, p);
+  const double m = double(ws.vertices().size());
+  EXPECT_EQ(e.leaves, ws.stats().squares) << what;
+  EXPECT_EQ(e.input, input.size()) << what;
+  EXPECT_GE(e.vertices, m) << what << ": the estimate is below the output";
+  EXPECT_LE(e.vertices, 15 * m) << what << ": the estimate is more than 15x the output";
+}
+TEST(WellspacedInput, OutputEstimateIsAnEnvelopeOfTheOutput) {
+  const std::vector<Point<2>> ulp = {{0.5, 0.5}, {std::nextafter(0.5, 1.0), 0.5}};
+  for (auto [rho, beta] : {RhoBeta{1.1, 2.2}, RhoBeta{1.2, 3}, RhoBeta{1.2, 4}, RhoBeta{1.5, 8}, RhoBeta{4, 8}})
+    estimate_case<2>(ulp, rho, beta, "1-ulp pair rho=" + std::to_string(rho) + " beta=" + std::to_string(beta));
+  for (auto [rho, beta] : {RhoBeta{1.2, 3}, RhoBeta{2, 4}}) {
+    const std::string r = " rho=" + std::to_string(rho);
+    estimate_case<2>(gen::near_duplicate_pairs<2>(2, 0x1p-30, 3), rho, beta, "2^-30 pair" + r);
+    estimate_case<2>(gen::points<2>(gen::Kind::uniform, 100, 1), rho, beta, "uniform 100" + r);
+    estimate_case<2>(gen::points<2>(gen::Kind::clustered, 40, 1), rho, beta, "clustered 40" + r);
+    estimate_case<2>(gen::points<2>(gen::Kind::collinear, 40, 1), rho, beta, "collinear 40" + r);
+    estimate_case<3>(gen::points<3>(gen::Kind::uniform, 30, 1), rho, beta, "3D uniform 30" + r);
+  }
+  estimate_case<3>(gen::near_duplicate_pairs<3>(2, 0x1p-10, 3), 1.5, 3, "3D 2^-10 pair rho=1.5");
+  // ρ → 1: the output saturates (3 points: 268 vertices at ρ = 1.05, 440 at 1 + 2^-9); the
+  // estimate stays finite and above it
+  const std::vector<Point<2>> three = {{0.5, 0.5}, {0.52, 0.5}, {0.9, 0.1}};
+  for (double rho : {1.05, 1.0078125}) {
+    const OutputEstimate e = estimate_output<2>(three, rho);
+    Params p;
+    p.rho = rho;
+    WellSpacedSet<2> ws(three, p);
+    EXPECT_GE(e.vertices, double(ws.vertices().size())) << "three points rho=" << rho;
+    EXPECT_LE(e.vertices, 15.0 * double(ws.vertices().size())) << "three points rho=" << rho;
+  }
+}
+// The progress hook sees the vertex count grow, and its last report does not exceed the output.
+TEST(WellspacedInput, ProgressHookReportsGrowingVertexCounts) {
+  Params p;
+  p.rho = 1.2;
+  std::vector<std::size_t> seen;
+  p.progress = [&](std::size_t vertices, std::size_t) { seen.push_back(vertices); };
+  const std::vector<Point<2>> ulp = {{0.5, 0.5}, {std::nextafter(0.5, 1.0), 0.5}};
+  WellSpacedSet<2> ws(ulp, p);
+  ASSERT_GE(seen.size(), 2u) << "a run of " << ws.stats().ops << " operations reported " << seen.size() << " times";
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_LT(seen.front(), seen.back());
+  EXPECT_LE(seen.back(), ws.vertices().size());
+}
+
 // Order matters to PropagateWS (construct sorts its input, so reversing the input tests nothing):
 // the same final input set reached by two different histories — (a) built from S ∪ X, then X
 // erased in one order; (b) built from S minus Y, then Y inserted in the reverse order and X
