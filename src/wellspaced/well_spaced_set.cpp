@@ -108,7 +108,7 @@ const Stats& WellSpacedSet<D>::stats() const {
 // vertices per graded leaf ÷ c^{D−1} (pairs 2^-10 … 2^-53 apart, the largest over β ∈ {3, 4, 8}).
 double estimated_vertices(std::size_t dim, std::size_t n, std::size_t leaves, double rho) {
   KMR_CHECK(dim >= 2 && dim <= 4 && rho > 1, "estimated_vertices: D in 2..4, rho > 1");
-  static constexpr double k[] = {10, 26, 88}, b[] = {0.33, 0.11, 0.03}, a[] = {0.5, 0.07, 0.012};
+  static constexpr double k[] = {11, 30, 88}, b[] = {0.33, 0.14, 0.03}, a[] = {0.5, 0.072, 0.012};
   const std::size_t i = dim - 2;
   // c = 2ρ/(ρ−1) (Lemma 3.3.3). Measured (2D pairs), the output grows more slowly than c^{D−1}
   // once ρ < 1.05 (c > 42): ×2.5–2.9 from ρ = 1.05 to 1 + 2^-7, ×1.2 from there to 1 + 2^-9; so
