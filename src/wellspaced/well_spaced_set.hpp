@@ -42,6 +42,11 @@ struct Params {
   // Called during change propagation (construction and updates) about every 1024 operations with
   // the current number of vertices and of operations processed (the CLI's progress line).
   std::function<void(std::size_t vertices, std::size_t operations)> progress;
+  // Test hook (issue 11 §1, Lemma 3.4.2's (I1)): when nonzero, the operations of one time bucket
+  // of the propagation queue (equal time, different vertices) are processed in an order shuffled
+  // with this seed instead of by vertex. Results must not change (an operation sees only what
+  // was created strictly before its time).
+  std::uint64_t bucket_shuffle_seed = 0;
 };
 
 // An estimate of |M| before the construction, from the input alone, for refusing runs whose
