@@ -113,7 +113,8 @@ double estimated_vertices(std::size_t dim, std::size_t n, std::size_t leaves, do
   // c = 2ρ/(ρ−1) (Lemma 3.3.3). Measured (2D pairs), the output grows more slowly than c^{D−1}
   // once ρ < 1.05 (c > 42): ×2.5–2.9 from ρ = 1.05 to 1 + 2^-7, ×1.2 from there to 1 + 2^-9; so
   // c counts fully up to 42 and logarithmically beyond (an envelope of those runs).
-  const double c0 = 2 * rho / (rho - 1), c = c0 <= 42 ? c0 : 42 * (1 + std::log(c0 / 42));
+  // (2ρ/(ρ−1) written without overflow: a huge ρ is refused later, by the construction)
+  const double c0 = 2 / (1 - 1 / rho), c = c0 <= 42 ? c0 : 42 * (1 + std::log(c0 / 42));
   const double graded = std::max(0.0, double(leaves) - k[i] * double(n));
   return double(n) + std::pow(c, double(dim - 1)) * (b[i] * double(n) + a[i] * graded);
 }
