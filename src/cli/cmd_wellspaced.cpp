@@ -29,6 +29,38 @@ std::string json_num(double x) {
   return b;
 }
 
+// The default --max-vertices per dimension (spec/wellspaced.md, "Output-size estimate"): about
+// 10 minutes at the measured construction speed (2D 0.1–0.3 ms, 3D 0.5–2.2 ms, 4D 5–35 ms per
+// output vertex, 2 shared cores) and ≈ 10 KB of memory per vertex.
+long long default_max_vertices(std::size_t dim) { return dim == 2 ? 1000000 : dim == 3 ? 300000 : 20000; }
+
+std::string round_num(double x) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.3g", x);
+  return b;
+}
+
+// Refuses (InputError, exit 2) a run whose estimated output exceeds the limit, naming the estimate
+// and the options that bring it within the limit (issue 11 §1: never an unbounded silent run).
+template <std::size_t D>
+OutputEstimate refuse_out_of_reach_output(const std::vector<Point<D>>& input, const Params& params, long long limit) {
+  OutputEstimate e = estimate_output<D>(input, params.rho);
+  if (limit == 0 || e.vertices <= double(limit)) return e;
+  std::string msg = "the output is estimated at about " + round_num(e.vertices) + " vertices (n = " +
+                    std::to_string(e.input) + ", " + std::to_string(e.leaves) + " squares in the 2^D-tree, depth " +
+                    std::to_string(e.depth) + ", rho = " + json_num(params.rho) + ", dim " + std::to_string(D) +
+                    "), more than --max-vertices " + std::to_string(limit) + "; ";
+  std::string fit;
+  for (double r : {1.05, 1.1, 1.2, 1.3, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 16.0, 32.0, 64.0})
+    if (r > params.rho && estimated_vertices(D, e.input, e.leaves, r) <= double(limit)) {
+      fit = "--rho " + round_num(r) + " (about " + round_num(estimated_vertices(D, e.input, e.leaves, r)) + " vertices)";
+      break;
+    }
+  msg += fit.empty() ? "no rho <= 64 fits; " : "use a larger rho, e.g. " + fit + ", or ";
+  msg += "raise --max-vertices (0 = no limit) to run it anyway";
+  throw InputError(msg);
+}
+
 template <std::size_t D>
 int run(const Args& args, const std::string& input_path, Params params) {
   std::ifstream in(input_path);
@@ -43,8 +75,17 @@ int run(const Args& args, const std::string& input_path, Params params) {
   if (input.size() < 2) throw InputError(input_path + ": at least 2 input points are needed");
   OutputFile picture;  // opened before the run (a bad path fails fast), removed if the run fails
   if (auto f = args.value("svg")) picture.open(*f, "--svg");
+  const OutputEstimate estimate =
+      refuse_out_of_reach_output<D>(input, params, args.integer("max-vertices", default_max_vertices(D), 0, 1LL << 53));
   Progress progress(args.has("quiet"));
-  progress.message("kmr wellspaced: StableWS on " + std::to_string(input.size()) + " points");
+  const std::string building = "kmr wellspaced: StableWS on " + std::to_string(input.size()) + " points";
+  progress.message(building);
+  if (progress.enabled())
+    params.progress = [&](std::size_t vertices, std::size_t) {
+      if (progress.due())
+        progress.message(building + ": " + std::to_string(vertices) + " vertices (about " +
+                         round_num(estimate.vertices) + " estimated)");
+    };
   WellSpacedSet<D> ws(input, params);
   Stats cstats = ws.stats();
   bool check = args.has("check");
@@ -102,6 +143,7 @@ int run(const Args& args, const std::string& input_path, Params params) {
     if (!js) throw InputError("cannot write --stats file '" + *sp + "'");
     js << "{\n  \"dim\": " << D << ", \"rho\": " << json_num(params.rho) << ", \"beta\": " << json_num(params.beta)
        << ", \"kappa\": " << ws.kappa() << ",\n  \"construction\": {\"input\": " << input.size()
+       << ", \"estimated_vertices\": " << json_num(estimate.vertices) << ", \"tree_leaves\": " << estimate.leaves
        << ", \"dispatches\": " << cstats.dispatches << ", \"fills\": " << cstats.fills << ", \"operations\": " << cstats.ops
        << ", \"steiner\": " << cstats.steiner << ", \"squares\": " << cstats.squares
        << ", \"cv_calls\": " << cstats.cv_calls << ", \"cv_squares_max\": " << cstats.cv_squares_max
@@ -126,9 +168,9 @@ int run(const Args& args, const std::string& input_path, Params params) {
 }  // namespace
 
 int wellspaced_command(const Argv& argv) {
-  Args args(argv, {"dim", "rho", "beta", "updates", "stats", "svg"}, {"check", "quiet"});
+  Args args(argv, {"dim", "rho", "beta", "updates", "stats", "svg", "max-vertices"}, {"check", "quiet"});
   if (args.help()) {
-    std::cout << "usage: kmr wellspaced --dim D [--rho R] [--beta B] [--updates FILE] [--check] [--stats FILE] [--svg FILE] [--quiet] INPUT\n"
+    std::cout << "usage: kmr wellspaced --dim D [--rho R] [--beta B] [--updates FILE] [--check] [--stats FILE] [--svg FILE] [--max-vertices N] [--quiet] INPUT\n"
                  "Builds a rho-well-spaced, size-optimal superset of the points in INPUT (thesis Ch. 3, StableWS),\n"
                  "then applies dynamic updates (PropagateWS). D is 2, 3 or 4.\n"
                  "  INPUT       one point per line: D decimal coordinates in [0,1]; '#' starts a comment\n"
@@ -140,6 +182,8 @@ int wellspaced_command(const Argv& argv) {
                  "  --stats     write construction and per-update counts as JSON\n"
                  "  --svg       (2D) draw the final output to FILE: Voronoi cells clipped to [0,1]^2, input\n"
                  "              vertices filled, Steiner vertices open\n"
+                 "  --max-vertices N  refuse (exit 2) when the output is estimated above N vertices\n"
+                 "              (default 1000000 in 2D, 300000 in 3D, 20000 in 4D; 0 = no limit)\n"
                  "  --quiet     no progress on stderr (shown only when stderr is a terminal)\n"
                  "stdout: the output vertices, 'x1 .. xD flag' with %.17g coordinates, flag 1 = Steiner;\n"
                  "a coordinate finer than a double (near-duplicate inputs) is an exact hex float (0x1.<hex>p<e>).\n"

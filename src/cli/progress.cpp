@@ -35,6 +35,8 @@ void Progress::step(std::size_t i, std::size_t n, const std::string& what) {
   message(line);
 }
 
+bool Progress::due() const { return enabled_ && (last_ < 0 || now() - last_ >= 0.1); }
+
 void Progress::done() {
   if (!enabled_ || width_ == 0) return;
   std::fprintf(stderr, "\r%s\r", std::string(width_, ' ').c_str());

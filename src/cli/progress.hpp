@@ -16,6 +16,9 @@ class Progress {
   // "[i/n] what" (i counted from 1); at most ~10 redraws a second.
   void step(std::size_t i, std::size_t n, const std::string& what);
   void message(const std::string& what);
+  // Whether a redraw is due (enabled, and none in the last ~0.1 s): for callers that build their
+  // line only when it will be shown.
+  bool due() const;
   void done();
 
  private:

@@ -21,6 +21,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <tuple>
@@ -38,7 +39,34 @@ struct Params {
   double rho = 1.5;   // well-spacedness ratio ρ > 1
   double beta = 3.0;  // clipping ratio β > ρ
   bool exact_only = false;  // skip the interval tier (tests compare both tiers; results are equal)
+  // Called during change propagation (construction and updates) about every 1024 operations with
+  // the current number of vertices and of operations processed (the CLI's progress line).
+  std::function<void(std::size_t vertices, std::size_t operations)> progress;
+  // Test hook (issue 11 §1, Lemma 3.4.2's (I1)): when nonzero, the operations of one time bucket
+  // of the propagation queue (equal time, different vertices) are processed in an order shuffled
+  // with this seed instead of by vertex. Results must not change (an operation sees only what
+  // was created strictly before its time).
+  std::uint64_t bucket_shuffle_seed = 0;
 };
+
+// An estimate of |M| before the construction, from the input alone, for refusing runs whose
+// output is out of reach (spec/wellspaced.md, "Output-size estimate"). The leaves of the balanced
+// 2^D-tree are Θ(lfs) (Lemma 3.1.5), and M is size-conforming with c = 2ρ/(ρ−1) (Lemma 3.3.3), so
+// |M| = O(c^D · leaves); measured, the Steiner vertices grow like c^{D−1} per input vertex and per
+// graded leaf (a leaf beyond the k_D leaves an isolated input brings), so
+//   |M| ≈ n + c^{D−1}·(b_D·n + a_D·graded),  graded = max(0, leaves − k_D·n),
+// with a_D, b_D, k_D the measured envelope (spec/wellspaced.md gives the fit and its accuracy).
+struct OutputEstimate {
+  std::size_t input = 0;   // n (distinct points)
+  std::size_t leaves = 0;  // leaves of the balanced 2^D-tree (QTBuild; independent of ρ, β)
+  int depth = 0;           // the deepest leaf's level
+  double vertices = 0;     // the estimate of |M|
+};
+// The estimate for n inputs whose tree has `leaves` leaves, at ρ (D = 2, 3, 4).
+double estimated_vertices(std::size_t dim, std::size_t n, std::size_t leaves, double rho);
+// Builds the tree of `input` (QTBuild) and estimates. InputError on bad input, as the construction.
+template <std::size_t D>
+OutputEstimate estimate_output(const std::vector<Point<D>>& input, double rho);
 
 template <std::size_t D>
 struct Vertex {

@@ -317,6 +317,62 @@ TEST(WellspacedInput, RhoTooCloseToOneIsRefused) {
   check_output<2>(three, ws, "rho=1.01");
 }
 
+// The output-size estimate (issue 11 §1; spec/wellspaced.md, "Output-size estimate") is an
+// envelope of measured outputs: on pairs 2^-10 … 1 ulp apart, uniform, clustered and collinear
+// inputs, 2D and 3D, ρ from 1.1 to 4, it is at least |M| and at most 15·|M|, and it counts the
+// construction's own tree (leaves = the squares StableWS builds).
+template <std::size_t D>
+void estimate_case(const std::vector<Point<D>>& input, double rho, double beta, const std::string& what) {
+  Params p;
+  p.rho = rho;
+  p.beta = beta;
+  const OutputEstimate e = estimate_output<D>(input, rho);
+  WellSpacedSet<D> ws(input, p);
+  const double m = double(ws.vertices().size());
+  EXPECT_EQ(e.leaves, ws.stats().squares) << what;
+  EXPECT_EQ(e.input, input.size()) << what;
+  EXPECT_GE(e.vertices, m) << what << ": the estimate is below the output";
+  EXPECT_LE(e.vertices, 15 * m) << what << ": the estimate is more than 15x the output";
+}
+TEST(WellspacedInput, OutputEstimateIsAnEnvelopeOfTheOutput) {
+  const std::vector<Point<2>> ulp = {{0.5, 0.5}, {std::nextafter(0.5, 1.0), 0.5}};
+  for (auto [rho, beta] : {RhoBeta{1.1, 2.2}, RhoBeta{1.2, 3}, RhoBeta{1.2, 4}, RhoBeta{1.5, 8}, RhoBeta{4, 8}})
+    estimate_case<2>(ulp, rho, beta, "1-ulp pair rho=" + std::to_string(rho) + " beta=" + std::to_string(beta));
+  for (auto [rho, beta] : {RhoBeta{1.2, 3}, RhoBeta{2, 4}}) {
+    const std::string r = " rho=" + std::to_string(rho);
+    estimate_case<2>(gen::near_duplicate_pairs<2>(2, 0x1p-30, 3), rho, beta, "2^-30 pair" + r);
+    estimate_case<2>(gen::points<2>(gen::Kind::uniform, 100, 1), rho, beta, "uniform 100" + r);
+    estimate_case<2>(gen::points<2>(gen::Kind::clustered, 40, 1), rho, beta, "clustered 40" + r);
+    estimate_case<2>(gen::points<2>(gen::Kind::collinear, 40, 1), rho, beta, "collinear 40" + r);
+    estimate_case<3>(gen::points<3>(gen::Kind::uniform, 30, 1), rho, beta, "3D uniform 30" + r);
+  }
+  estimate_case<3>(gen::near_duplicate_pairs<3>(2, 0x1p-10, 3), 1.5, 3, "3D 2^-10 pair rho=1.5");
+  // ρ → 1: the output saturates (3 points: 268 vertices at ρ = 1.05, 440 at 1 + 2^-9); the
+  // estimate stays finite and above it
+  const std::vector<Point<2>> three = {{0.5, 0.5}, {0.52, 0.5}, {0.9, 0.1}};
+  for (double rho : {1.05, 1.0078125}) {
+    const OutputEstimate e = estimate_output<2>(three, rho);
+    Params p;
+    p.rho = rho;
+    WellSpacedSet<2> ws(three, p);
+    EXPECT_GE(e.vertices, double(ws.vertices().size())) << "three points rho=" << rho;
+    EXPECT_LE(e.vertices, 15.0 * double(ws.vertices().size())) << "three points rho=" << rho;
+  }
+}
+// The progress hook sees the vertex count grow, and its last report does not exceed the output.
+TEST(WellspacedInput, ProgressHookReportsGrowingVertexCounts) {
+  Params p;
+  p.rho = 1.2;
+  std::vector<std::size_t> seen;
+  p.progress = [&](std::size_t vertices, std::size_t) { seen.push_back(vertices); };
+  const std::vector<Point<2>> ulp = {{0.5, 0.5}, {std::nextafter(0.5, 1.0), 0.5}};
+  WellSpacedSet<2> ws(ulp, p);
+  ASSERT_GE(seen.size(), 2u) << "a run of " << ws.stats().ops << " operations reported " << seen.size() << " times";
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_LT(seen.front(), seen.back());
+  EXPECT_LE(seen.back(), ws.vertices().size());
+}
+
 // Order matters to PropagateWS (construct sorts its input, so reversing the input tests nothing):
 // the same final input set reached by two different histories — (a) built from S ∪ X, then X
 // erased in one order; (b) built from S minus Y, then Y inserted in the reverse order and X
@@ -351,6 +407,51 @@ TEST(WellspacedDynamic, L3_4_2_DifferentHistoriesSameGraph) {
   for (auto k : {gen::Kind::uniform, gen::Kind::clustered, gen::Kind::close_pair, gen::Kind::grid, gen::Kind::boundary})
     histories_case<2>(k, 20, 6, 3);
   histories_case<3>(gen::Kind::uniform, 8, 3, 4);
+}
+
+// Issue 11 §1 / Lemma 3.4.2's (I1): the order of the operations within one time bucket of the
+// propagation queue does not matter — with Params::bucket_shuffle_seed, each bucket is processed
+// in a seeded random order; the vertices, the canonical graph and the result of an insertion and
+// a deletion equal those of the default (vertex) order. Non-vacuous: the runs have buckets with
+// several executed fills (checked), where an operation seeing a same-time vertex would differ.
+template <std::size_t D>
+void bucket_order_case(const std::vector<Point<D>>& input, const Point<D>& extra, const std::string& what) {
+  Params p;
+  p.rho = 1.5;
+  p.beta = 3;
+  WellSpacedSet<D> ref(input, p);
+  std::map<std::tuple<int, bool, std::int64_t>, int> fills_at;
+  for (const auto& op : ref.computation_graph())
+    if (op.executed && op.fill) ++fills_at[{op.rank, op.fill, op.color}];
+  int crowded = 0;
+  for (const auto& [t, c] : fills_at) crowded += c >= 2;
+  ASSERT_GT(crowded, 0) << what << ": no time bucket with two fills";
+  const auto ref_vertices = coords<D>(ref.vertices());
+  const auto ref_graph = ref.canonical_graph();
+  ref.insert(extra);
+  const auto ref_ins = ref.canonical_graph();
+  ref.erase(input.front());
+  const auto ref_del = ref.canonical_graph();
+  for (std::uint64_t seed : {1, 2, 3}) {
+    Params q = p;
+    q.bucket_shuffle_seed = seed;
+    WellSpacedSet<D> ws(input, q);
+    const std::string w = what + " seed " + std::to_string(seed);
+    EXPECT_EQ(coords<D>(ws.vertices()), ref_vertices) << w;
+    EXPECT_EQ(ws.canonical_graph(), ref_graph) << w;
+    ws.insert(extra);
+    EXPECT_EQ(ws.canonical_graph(), ref_ins) << w << " after an insertion";
+    ws.erase(input.front());
+    EXPECT_EQ(ws.canonical_graph(), ref_del) << w << " after a deletion";
+    EXPECT_EQ(ws.check_internal_indexes(), "") << w;
+  }
+}
+TEST(WellspacedDynamic, L3_4_2_OrderWithinATimeBucketDoesNotMatter) {
+  RecordProperty("claim", "L3.4.2");
+  bucket_order_case<2>(gen::points<2>(gen::Kind::uniform, 60, 5), {0.3141592653589793, 0.2718281828459045}, "2D uniform 60");
+  bucket_order_case<2>(gen::points<2>(gen::Kind::clustered, 40, 5), {0.5, 0.125}, "2D clustered 40");
+  bucket_order_case<2>(gen::near_duplicate_pairs<2>(6, 0x1p-20, 5), {0.75, 0.75}, "2D 2^-20 pairs");
+  bucket_order_case<3>(gen::points<3>(gen::Kind::uniform, 20, 5), {0.3, 0.6, 0.2}, "3D uniform 20");
 }
 
 // Lemma 3.3.12, directly on the computation graph of a run: for two executed fills v_(t), u_(t)

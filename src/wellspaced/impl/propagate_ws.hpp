@@ -97,10 +97,31 @@ auto WellSpacedSet<D>::Impl::process(const OpKey& k) -> void {
 
 template <std::size_t D>
 auto WellSpacedSet<D>::Impl::propagate() -> void {
-  while (!pending.empty()) {
-    OpKey k = *pending.begin();
-    pending.erase(pending.begin());
+  std::size_t processed = 0;
+  auto step = [&](const OpKey& k) {
     process(k);
+    if (params.progress && ++processed % 1024 == 0) params.progress(vtx.size(), processed);
+  };
+  if (params.bucket_shuffle_seed == 0) {
+    while (!pending.empty()) {
+      OpKey k = *pending.begin();
+      pending.erase(pending.begin());
+      step(k);
+    }
+    return;
+  }
+  // test hook: each time bucket in a seeded random order ((I1): processing adds only later times)
+  std::mt19937_64 rng(params.bucket_shuffle_seed);
+  std::vector<OpKey> bucket;
+  while (!pending.empty()) {
+    const Time t = pending.begin()->t;
+    bucket.clear();
+    for (auto it = pending.begin(); it != pending.end() && it->t == t;) {
+      bucket.push_back(*it);
+      it = pending.erase(it);
+    }
+    std::shuffle(bucket.begin(), bucket.end(), rng);
+    for (const OpKey& k : bucket) step(k);
   }
 }
 

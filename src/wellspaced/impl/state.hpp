@@ -22,6 +22,7 @@
 #include <set>
 #include <unordered_map>
 #include <algorithm>
+#include <random>
 #include <bit>
 
 #include "exact/error.hpp"

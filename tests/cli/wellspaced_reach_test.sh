@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# Issue 11 §1, "never an unbounded silent run": every `kmr wellspaced` run below must end within
+# its own timeout (never by hanging ctest), either with an answer or with an upfront refusal
+# (exit 2) that names the estimate and the options that fit (spec/wellspaced.md, "Output-size
+# estimate"). Usage: wellspaced_reach_test.sh path/to/kmr
+set -u
+kmr=$1
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+passed=0 failed=0
+ok() { passed=$((passed+1)); }
+bad() { failed=$((failed+1)); echo "FAIL $*"; }
+# run NAME SECONDS ARGS...: kmr ARGS with stdout/stderr in $tmp/out, $tmp/err; rc in $rc
+run() {
+  local name=$1 secs=$2; shift 2
+  timeout "$secs" "$kmr" "$@" >"$tmp/out" 2>"$tmp/err"; rc=$?
+  [ $rc -eq 124 ] && bad "$name: no answer within $secs s (a silent run)"
+  return 0
+}
+json_field() { grep -oE "\"$1\": [0-9.e+-]+" "$2" | head -1 | sed 's/.*: //'; }
+
+# 1. Two points 1 ulp apart (0.5 and the next double) at ρ = 1.2, β = 3, in [0,1]^2 and at a
+#    corner: answered (exit 0) within 60 s, the inputs in the output, and the output no larger
+#    than the estimate (the estimate is an envelope of the measured outputs).
+printf '0.5 0.5\n0.50000000000000011 0.5\n' >"$tmp/ulp2"
+printf '1 1\n0.99999999999999989 1\n' >"$tmp/ulp2c"
+for f in ulp2 ulp2c; do
+  run "$f" 60 wellspaced --dim 2 --rho 1.2 --beta 3 --stats "$tmp/s.json" "$tmp/$f"
+  if [ $rc -eq 0 ]; then
+    m=$(wc -l <"$tmp/out"); inputs=$(grep -c ' 0$' "$tmp/out")
+    est=$(json_field estimated_vertices "$tmp/s.json")
+    [ "$inputs" -eq 2 ] && [ "$m" -gt 2 ] && ok || bad "$f: $m vertices, $inputs inputs"
+    awk -v m="$m" -v e="$est" 'BEGIN { exit !(e >= m) }' && ok || bad "$f: estimate $est below the output $m"
+  elif [ $rc -ne 124 ]; then bad "$f: rc=$rc $(head -c 300 "$tmp/err")"; fi
+done
+
+# 2. The same pair in 4D at ρ = 1.2 (hours of StableWS): refused upfront, naming the estimate,
+#    the limit and a ρ that fits; nothing on stdout.
+printf '0.5 0.5 0.5 0.5\n0.50000000000000011 0.5 0.5 0.5\n' >"$tmp/ulp4"
+run ulp4 20 wellspaced --dim 4 --rho 1.2 --beta 3 "$tmp/ulp4"
+if [ $rc -eq 2 ] && [ ! -s "$tmp/out" ] && grep -q 'estimated at about' "$tmp/err" && grep -qF -- '--max-vertices 20000' "$tmp/err" \
+  && grep -qF -- 'e.g. --rho ' "$tmp/err" && ! grep -q 'internal error' "$tmp/err"; then ok; else
+  [ $rc -eq 124 ] || bad "ulp4: rc=$rc (want 2 and the estimate), stderr: $(head -c 300 "$tmp/err")"; fi
+
+# 3. ρ = 1.0000001 on three points (issue 11): refused upfront (the exact rank thresholds).
+printf '0.5 0.5\n0.52 0.5\n0.9 0.1\n' >"$tmp/three"
+run three 20 wellspaced --dim 2 --rho 1.0000001 "$tmp/three"
+if [ $rc -eq 2 ] && [ ! -s "$tmp/out" ] && grep -q 'too close to 1' "$tmp/err"; then ok; else
+  [ $rc -eq 124 ] || bad "three: rc=$rc (want 2, 'too close to 1'), stderr: $(head -c 300 "$tmp/err")"; fi
+
+# 4. The suggested ρ fits: with --max-vertices 3000 the 2D pair at ρ = 1.2 is refused with a
+#    suggestion; rerun with it, the run is accepted and its output is within the limit.
+run limit 60 wellspaced --dim 2 --rho 1.2 --beta 3 --max-vertices 3000 "$tmp/ulp2"
+sugg=$(grep -oE 'e\.g\. --rho [0-9.]+' "$tmp/err" | sed 's/.*--rho //')
+if [ $rc -eq 2 ] && [ -n "$sugg" ]; then
+  ok
+  run limit-fits 60 wellspaced --dim 2 --rho "$sugg" --beta 3 --max-vertices 3000 "$tmp/ulp2"
+  m=$(wc -l <"$tmp/out")
+  [ $rc -eq 0 ] && [ "$m" -le 3000 ] && ok || bad "limit-fits: --rho $sugg: rc=$rc, $m vertices"
+else bad "limit: rc=$rc, no suggested --rho: $(head -c 300 "$tmp/err")"; fi
+# --max-vertices 0 lifts the limit; a bad value is refused (exit 2) naming the value or the option.
+run no-limit 60 wellspaced --dim 2 --rho 1.2 --beta 3 --max-vertices 0 "$tmp/ulp2"
+[ $rc -eq 0 ] && ok || bad "no-limit: rc=$rc"
+run limit-word 20 wellspaced --dim 2 --max-vertices many "$tmp/ulp2"
+[ $rc -eq 2 ] && grep -qF -- "'many'" "$tmp/err" && ok || bad "limit-word: rc=$rc $(head -c 200 "$tmp/err")"
+run limit-negative 20 wellspaced --dim 2 --max-vertices -5 "$tmp/ulp2"
+[ $rc -eq 2 ] && grep -qF -- '--max-vertices' "$tmp/err" && ok || bad "limit-negative: rc=$rc $(head -c 200 "$tmp/err")"
+
+echo "wellspaced_reach_test: $passed passed, $failed failed"
+[ $failed -eq 0 ] && [ $passed -gt 0 ]
