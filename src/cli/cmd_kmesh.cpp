@@ -151,8 +151,8 @@ int kmesh_command(const Argv& argv) {
       }
   };
   // Points at rest with insertions and deletions: the update of Fig. 4.5 (kmesh/update.hpp). Moving
-  // points: the reference KDS that repairs every batch by reconstruction (the kinetic events are not
-  // yet repaired by Fig. 4.5, spec/kmesh.md).
+  // points: the KDS (kmesh/kds.hpp), which repairs every batch by Fig. 4.5 (the nuclei of the failed
+  // certificates relocated, spec/kmesh.md); --rebuild: the reference that rebuilds at every batch.
   bool at_rest = std::all_of(in.begin(), in.end(), [](auto& p) { return p.vx == 0 && p.vy == 0; }) &&
                  std::all_of(updates.begin(), updates.end(), [](auto& u) { return u.p.vx == 0 && u.p.vy == 0; });
   std::vector<Batch> batches;

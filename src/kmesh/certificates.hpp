@@ -80,7 +80,7 @@ bool holds_at(const Certificate& c, const Dyadic& t);
 bool fails_at_zero(const Certificate& c);
 
 // The batch of a certificate (δ = 2^−bits, s its polynomial's solver): the first lattice index
-// k ≥ from/δ with kδ < horizon such that it fails in (kδ, (k+1)δ], so that repairing it at (k+1)δ
+// k with (k+1)δ > from and kδ < horizon such that it fails in (kδ, (k+1)δ], so that repairing it at (k+1)δ
 // leaves it holding at every lattice time before. The solver's sign-change interval f, [fδ, (f+1)δ),
 // is batch f, except when the certificate fails at a zero (fails_at_zero) and vanishes at fδ > from:
 // it is violated at fδ itself, so it is batch f − 1, repaired at fδ (and found before a horizon fδ).

@@ -189,8 +189,8 @@ void KineticMesh::isolate(const Key& key, Kept& k, const Dyadic& T) {
   else pending_.insert({to, key});
 }
 
-// The first lattice interval (counted from now) before T in which a kept certificate changes sign,
-// and every kept certificate failing there. Roots are isolated only for the certificates whose
+// The first lattice interval (counted from now) before T in which a kept certificate fails
+// (failure_batch), and every kept certificate failing there. Roots are isolated only for the certificates whose
 // cached answer does not cover [now, T): new ones, and those whose failure is behind now.
 std::optional<std::pair<exact::Integer, std::vector<const std::pair<const KineticMesh::Key, KineticMesh::Kept>*>>>
 KineticMesh::next_failures(const Dyadic& T) {
