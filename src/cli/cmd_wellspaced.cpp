@@ -41,9 +41,11 @@ std::string round_num(double x) {
 }
 
 // Refuses (InputError, exit 2) a run whose estimated output exceeds the limit, naming the estimate
-// and the options that bring it within the limit (issue 11 §1: never an unbounded silent run).
+// and the options that bring it within the limit (issue 11 §1: never an unbounded silent run). With
+// --beta given (beta_fixed), a suggested rho stays below it, since rho < beta is required.
 template <std::size_t D>
-OutputEstimate refuse_out_of_reach_output(const std::vector<Point<D>>& input, const Params& params, long long limit) {
+OutputEstimate refuse_out_of_reach_output(const std::vector<Point<D>>& input, const Params& params, bool beta_fixed,
+                                          long long limit) {
   OutputEstimate e = estimate_output<D>(input, params.rho);
   if (limit == 0 || e.vertices <= double(limit)) return e;
   std::string msg = "the output is estimated at about " + round_num(e.vertices) + " vertices (n = " +
@@ -52,11 +54,13 @@ OutputEstimate refuse_out_of_reach_output(const std::vector<Point<D>>& input, co
                     "), more than --max-vertices " + std::to_string(limit) + "; ";
   std::string fit;
   for (double r : {1.05, 1.1, 1.2, 1.3, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 16.0, 32.0, 64.0})
-    if (r > params.rho && estimated_vertices(D, e.input, e.leaves, r) <= double(limit)) {
+    if (r > params.rho && (!beta_fixed || r < params.beta) && estimated_vertices(D, e.input, e.leaves, r) <= double(limit)) {
       fit = "--rho " + round_num(r) + " (about " + round_num(estimated_vertices(D, e.input, e.leaves, r)) + " vertices)";
       break;
     }
-  msg += fit.empty() ? "no rho <= 64 fits; " : "use a larger rho, e.g. " + fit + ", or ";
+  msg += !fit.empty()  ? "use a larger rho, e.g. " + fit + ", or "
+         : beta_fixed ? "no rho below --beta " + json_num(params.beta) + " fits (a larger --beta allows a larger rho); "
+                      : "no rho <= 64 fits; ";
   msg += "raise --max-vertices (0 = no limit) to run it anyway";
   throw InputError(msg);
 }
@@ -76,17 +80,20 @@ int run(const Args& args, const std::string& input_path, Params params) {
   OutputFile picture;  // opened before the run (a bad path fails fast), removed if the run fails
   if (auto f = args.value("svg")) picture.open(*f, "--svg");
   const OutputEstimate estimate =
-      refuse_out_of_reach_output<D>(input, params, args.integer("max-vertices", default_max_vertices(D), 0, 1LL << 53));
+      refuse_out_of_reach_output<D>(input, params, args.value("beta").has_value(),
+                                    args.integer("max-vertices", default_max_vertices(D), 0, 1LL << 53));
   Progress progress(args.has("quiet"));
   const std::string building = "kmr wellspaced: StableWS on " + std::to_string(input.size()) + " points";
   progress.message(building);
+  bool constructing = true;  // the hook stays in params (and in ws): silent in updates and --check's scratch runs
   if (progress.enabled())
     params.progress = [&](std::size_t vertices, std::size_t) {
-      if (progress.due())
+      if (constructing && progress.due())
         progress.message(building + ": " + std::to_string(vertices) + " vertices (about " +
                          round_num(estimate.vertices) + " estimated)");
     };
   WellSpacedSet<D> ws(input, params);
+  constructing = false;
   Stats cstats = ws.stats();
   bool check = args.has("check");
   std::vector<std::pair<UpdateStats, double>> ustats;

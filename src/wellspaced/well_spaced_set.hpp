@@ -64,7 +64,8 @@ struct OutputEstimate {
 };
 // The estimate for n inputs whose tree has `leaves` leaves, at ρ (D = 2, 3, 4).
 double estimated_vertices(std::size_t dim, std::size_t n, std::size_t leaves, double rho);
-// Builds the tree of `input` (QTBuild) and estimates. InputError on bad input, as the construction.
+// Builds the tree of `input` (QTBuild) and estimates. InputError on bad input, as the construction;
+// rho must be > 1 and finite (a precondition, as for estimated_vertices: the CLI validates it first).
 template <std::size_t D>
 OutputEstimate estimate_output(const std::vector<Point<D>>& input, double rho);
 

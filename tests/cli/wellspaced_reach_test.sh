@@ -42,6 +42,13 @@ if [ $rc -eq 2 ] && [ ! -s "$tmp/out" ] && grep -q 'estimated at about' "$tmp/er
   && grep -qF -- 'e.g. --rho ' "$tmp/err" && ! grep -q 'internal error' "$tmp/err"; then ok; else
   [ $rc -eq 124 ] || bad "ulp4: rc=$rc (want 2 and the estimate), stderr: $(head -c 300 "$tmp/err")"; fi
 
+# 2b. With --beta given, the suggested ρ stays below it (ρ < β is required): at --beta 1.5 the
+#     suggestion is a ρ < 1.5, or the message says none below --beta fits.
+run ulp4-beta 20 wellspaced --dim 4 --rho 1.2 --beta 1.5 "$tmp/ulp4"
+sugg=$(grep -oE 'e\.g\. --rho [0-9.]+' "$tmp/err" | sed 's/.*--rho //')
+if [ $rc -eq 2 ] && { { [ -n "$sugg" ] && awk -v r="$sugg" 'BEGIN { exit !(r < 1.5) }'; } || grep -qF 'no rho below --beta 1.5 fits' "$tmp/err"; }; then ok; else
+  [ $rc -eq 124 ] || bad "ulp4-beta: rc=$rc, suggested '$sugg' not below --beta 1.5: $(head -c 300 "$tmp/err")"; fi
+
 # 3. ρ = 1.0000001 on three points (issue 11): refused upfront (the exact rank thresholds).
 printf '0.5 0.5\n0.52 0.5\n0.9 0.1\n' >"$tmp/three"
 run three 20 wellspaced --dim 2 --rho 1.0000001 "$tmp/three"
