@@ -5,10 +5,7 @@
 # Usage: bad_input_test.sh path/to/kmr
 set -u
 kmr=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-source "$(dirname "$0")/expect_error.sh"  # expect_error NAME STDERR_SUBSTRING -- ARGS...
+source "$(dirname "$0")/lib.sh"  # $tmp, ok, bad, expect_error, finish
 expect_same() {  # expect_same NAME -- ARGS_A... :: ARGS_B...   (both exit 0 with equal stdout)
   local name=$1; shift 2
   local a=() b=()
@@ -224,5 +221,4 @@ printf '0 0 0\n1 0 0\n0 1 0\n1 1 0\n' >"$f/flat.xyz"
 expect_error hull-svg-failed-run "all points are coplanar" -- hull "$f/flat.xyz" --svg "$f/flat.svg"
 if [ -e "$f/flat.svg" ]; then failed=$((failed+1)); echo "FAIL hull-svg-failed-run: left $f/flat.svg behind"; else passed=$((passed+1)); fi
 
-echo "bad input: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish "bad input"

@@ -3,21 +3,13 @@
 # (clear message naming the problem, exit status 2). Usage: cli_test.sh path/to/kmr
 set -u
 kmr=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
+source "$(dirname "$0")/lib.sh"  # $tmp, ok, bad, expect_error, finish
 
 expect_out() {  # expect_out NAME EXPECTED_STDOUT -- ARGS...
   local name=$1 want=$2; shift 3
   local got; got=$("$kmr" "$@" 2>"$tmp/err"); local rc=$?
   if [ $rc -eq 0 ] && [ "$got" = "$want" ]; then passed=$((passed+1)); else
     failed=$((failed+1)); echo "FAIL $name: rc=$rc"; echo "  want: $want"; echo "  got:  $got"; cat "$tmp/err"; fi
-}
-expect_error() {  # expect_error NAME STDERR_SUBSTRING -- ARGS...
-  local name=$1 want=$2; shift 3
-  "$kmr" "$@" >"$tmp/out" 2>"$tmp/err"; local rc=$?
-  if [ $rc -eq 2 ] && grep -qF -- "$want" "$tmp/err"; then passed=$((passed+1)); else
-    failed=$((failed+1)); echo "FAIL $name: rc=$rc (want 2), stderr:"; cat "$tmp/err"; fi
 }
 
 # t² − 2: roots ±√2; √2·1024 = 1448.15.
@@ -149,5 +141,4 @@ expect_error hull-missing 'cannot open' -- hull "$tmp/none.xyz"
 "$kmr" hull "$tmp/cube.xyz" --stats "$tmp/stats.json" >/dev/null && grep -q '"inserted": ' "$tmp/stats.json" \
   && passed=$((passed+1)) || { failed=$((failed+1)); echo "FAIL hull-stats"; }
 
-echo "cli: $passed passed, $failed failed"
-[ $failed -eq 0 ]
+finish "cli"

@@ -9,11 +9,7 @@
 # Usage: hull_picture_test.sh path/to/kmr
 set -u
 kmr=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-ok() { passed=$((passed+1)); }
-bad() { failed=$((failed+1)); echo "FAIL $*"; }
+source "$(dirname "$0")/lib.sh"  # $tmp, ok, bad, expect_error, finish
 python3 -c "
 import random; random.seed(12)
 for i in range(80): print(*(random.gauss(0, 1) for _ in range(3)))" >"$tmp/ball.xyz"
@@ -60,5 +56,4 @@ check cube "$tmp/cube.xyz"
 check tiny "$tmp/tiny.xyz"
 "$kmr" hull "$tmp/cube.xyz" --svg /proc/nonexistent/x.svg >"$tmp/out" 2>"$tmp/err"
 [ $? -eq 2 ] && [ ! -s "$tmp/out" ] && grep -q "cannot write --svg file" "$tmp/err" && ok || bad "unwritable --svg: $(cat "$tmp/err")"
-echo "hull_picture_test: $passed passed, $failed failed"
-[ $failed -eq 0 ]
+finish "hull_picture_test"

@@ -6,11 +6,7 @@
 # Usage: kmesh_picture_test.sh path/to/kmr
 set -u
 kmr=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-ok() { passed=$((passed+1)); }
-bad() { failed=$((failed+1)); echo "FAIL $*"; }
+source "$(dirname "$0")/lib.sh"  # $tmp, ok, bad, expect_error, finish
 printf '0 0\n1000 0\n0 1000\n1000 1000\n430 570\n432 571\n250 800\n900 120\n' >"$tmp/spread.txt"
 awk 'BEGIN { for (i = 0; i < 4; i++) for (j = 0; j < 4; j++) print i * 100, j * 100 }' >"$tmp/grid.txt"  # cocircular
 printf '0 0\n10 0\n20 0\n30 0\n' >"$tmp/line.txt"                                                        # collinear
@@ -46,5 +42,4 @@ check one "$tmp/one.txt"
 check moving "$tmp/moving.txt" --until 0.25 --lattice-bits 2
 "$kmr" kmesh "$tmp/one.txt" --svg /proc/nonexistent/x.svg >"$tmp/out" 2>"$tmp/err"
 [ $? -eq 2 ] && [ ! -s "$tmp/out" ] && grep -q "cannot write --svg file" "$tmp/err" && ok || bad "unwritable --svg: $(cat "$tmp/err")"
-echo "kmesh_picture_test: $passed passed, $failed failed"
-[ $failed -eq 0 ]
+finish "kmesh_picture_test"

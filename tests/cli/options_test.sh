@@ -8,17 +8,8 @@
 # Usage: options_test.sh path/to/kmr path/to/README.md
 set -u
 kmr=$1 readme=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-ok() { passed=$((passed+1)); }
-bad() { failed=$((failed+1)); echo "FAIL $1"; }
-expect_error() {  # expect_error NAME STDERR_SUBSTRING -- ARGS...
-  local name=$1 want=$2; shift 3
-  timeout 120 "$kmr" "$@" >"$tmp/out" 2>"$tmp/err"; local rc=$?
-  if [ $rc -eq 2 ] && grep -qF -- "$want" "$tmp/err" && ! grep -q 'internal error' "$tmp/err"; then ok; else
-    bad "$name: rc=$rc (want 2 and '$want'), stderr: $(head -c 300 "$tmp/err")"; fi
-}
+source "$(dirname "$0")/lib.sh"  # $tmp, ok, bad, expect_error, finish
+expect_timeout=120
 
 # --- --help of every command lists every option of its README synopsis; exit 0, nothing on stderr --
 help_of() {  # help_of NAME SYNOPSIS_PREFIX CMD...
@@ -167,5 +158,4 @@ else
   bad "svg: a failed run unlinked the FIFO given as --svg"
 fi
 
-echo "options_test: $passed passed, $failed failed"
-[ $failed -eq 0 ]
+finish "options_test"

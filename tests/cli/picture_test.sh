@@ -6,11 +6,7 @@
 # Usage: picture_test.sh path/to/kmr INPUT_2D [INPUT_2D...]
 set -u
 kmr=$1; shift
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-ok() { passed=$((passed+1)); }
-bad() { failed=$((failed+1)); echo "FAIL $*"; }
+source "$(dirname "$0")/lib.sh"  # $tmp, ok, bad, expect_error, finish
 # degenerate inputs too: a cocircular 6 x 6 grid (crossing empty-circle pairs) and collinear points
 awk 'BEGIN { for (i = 0; i < 6; i++) for (j = 0; j < 6; j++) printf "%.17g %.17g\n", (i + 0.5) / 6, (j + 0.5) / 6 }' >"$tmp/grid.txt"
 awk 'BEGIN { for (i = 1; i < 12; i++) printf "%.17g 0.5\n", i / 12 }' >"$tmp/line.txt"
@@ -37,5 +33,4 @@ done
 [ $? -eq 2 ] && grep -q -- "--svg draws 2D outputs only" "$tmp/err" && ok || bad "--svg with --dim 3: $(cat "$tmp/err")"
 "$kmr" wellspaced --dim 2 --svg /proc/nonexistent/x.svg "$1" >"$tmp/out" 2>"$tmp/err"
 [ $? -eq 2 ] && [ ! -s "$tmp/out" ] && grep -q "cannot write --svg file" "$tmp/err" && ok || bad "unwritable --svg: $(cat "$tmp/err")"
-echo "picture_test: $passed passed, $failed failed"
-[ $failed -eq 0 ]
+finish "picture_test"

@@ -4,11 +4,7 @@
 # Usage: progress_test.sh path/to/kmr INPUT_2D
 set -u
 kmr=$1 input=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-ok() { passed=$((passed+1)); }
-bad() { failed=$((failed+1)); echo "FAIL $*"; }
+source "$(dirname "$0")/lib.sh"  # $tmp, ok, bad, expect_error, finish
 on_tty() {  # on_tty TYPESCRIPT COMMAND...: stdout to $tmp/out, stderr on the pseudo-terminal
   local ts=$1; shift
   script -qec "$* >$tmp/out" "$ts" >/dev/null
@@ -26,5 +22,4 @@ check() {  # check NAME PATTERN ARGS...
 check audit "kmr audit [1/1] L3.4.4" audit --quick --only L3.4.4
 check bench "kmr bench sac [1/7] map" bench sac --n 300 --edits 3
 check wellspaced "kmr wellspaced: StableWS on" wellspaced --dim 2 "$input"
-echo "progress_test: $passed passed, $failed failed"
-[ $failed -eq 0 ]
+finish "progress_test"

@@ -8,11 +8,7 @@
 # quick audit instead of making a small one.
 set -u
 kmr=$1 claims=$2 build=$3
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-ok() { passed=$((passed+1)); }
-bad() { failed=$((failed+1)); echo "FAIL $*"; }
+source "$(dirname "$0")/lib.sh"  # $tmp, ok, bad, expect_error, finish
 
 if [ $# -ge 5 ]; then
   mkdir -p "$tmp/r" && cp -r "$4"/. "$tmp/r/" && cp "$5" "$tmp/a.json" || { echo "FAIL no report in $4"; exit 1; }
@@ -100,5 +96,4 @@ else bad "--only NOSUCH: rc=$rc, stderr: $(cat "$tmp/err")"; fi
 v=$("$kmr" --version) && [[ "$v" =~ ^kmr\ [0-9]+\.[0-9]+ ]] && ok || bad "kmr --version printed '$v'"
 "$kmr" audit --report /proc/nonexistent/x --only L3.4.4 --quick >/dev/null 2>"$tmp/err"
 [ $? -eq 2 ] && grep -q "cannot create report directory" "$tmp/err" && ok || bad "unwritable --report: $(cat "$tmp/err")"
-echo "report_test: $passed passed, $failed failed"
-[ $failed -eq 0 ]
+finish "report_test"

@@ -7,11 +7,8 @@
 # Usage: usage_errors_test.sh path/to/kmr
 set -u
 kmr=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
+source "$(dirname "$0")/lib.sh"  # $tmp, ok, bad, expect_error, finish
 expect_timeout=120
-source "$(dirname "$0")/expect_error.sh"  # expect_error NAME STDERR_SUBSTRING -- ARGS...
 printf '0.25 0.25\n0.75 0.5\n' >"$tmp/ws"
 printf '0 0 0\n1 0 0\n0 1 0\n0 0 1\n' >"$tmp/xyz"
 : >"$tmp/file"              # a regular file: nothing can be created under it
@@ -41,5 +38,4 @@ expect_error ws_svg_3d "--svg draws 2D outputs only (use --dim 2)" -- wellspaced
 expect_error ws_stats "cannot write --stats file '$nodir/s.json'" -- wellspaced --dim 2 --stats "$nodir/s.json" "$tmp/ws"
 # Nothing was written where it could not be (and no stray output file appeared for the 3D --svg).
 [ ! -e "$tmp/o.svg" ] && passed=$((passed+1)) || { failed=$((failed+1)); echo "FAIL ws_svg_3d: wrote $tmp/o.svg"; }
-echo "usage errors: $passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish "usage errors"

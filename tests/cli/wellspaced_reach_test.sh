@@ -5,11 +5,7 @@
 # estimate"). Usage: wellspaced_reach_test.sh path/to/kmr
 set -u
 kmr=$1
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-ok() { passed=$((passed+1)); }
-bad() { failed=$((failed+1)); echo "FAIL $*"; }
+source "$(dirname "$0")/lib.sh"  # $tmp, ok, bad, expect_error, finish
 # run NAME SECONDS ARGS...: kmr ARGS with stdout/stderr in $tmp/out, $tmp/err; rc in $rc
 run() {
   local name=$1 secs=$2; shift 2
@@ -73,5 +69,4 @@ run limit-word 20 wellspaced --dim 2 --max-vertices many "$tmp/ulp2"
 run limit-negative 20 wellspaced --dim 2 --max-vertices -5 "$tmp/ulp2"
 [ $rc -eq 2 ] && grep -qF -- '--max-vertices' "$tmp/err" && ok || bad "limit-negative: rc=$rc $(head -c 200 "$tmp/err")"
 
-echo "wellspaced_reach_test: $passed passed, $failed failed"
-[ $failed -eq 0 ] && [ $passed -gt 0 ]
+finish "wellspaced_reach_test"
