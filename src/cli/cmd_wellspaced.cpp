@@ -43,13 +43,26 @@ std::string round_num(double x) {
 // Refuses (InputError, exit 2) a run whose estimated output exceeds the limit, naming the estimate
 // and the options that bring it within the limit (issue 11 §1: never an unbounded silent run). With
 // --beta given (beta_fixed), a suggested rho stays below it, since rho < beta is required.
+// With updates the estimate is of every point the run ever holds, the input and each insertion: the
+// set after any update is a subset of it, and a subset's output is, up to the constants of
+// size-optimality (T3.3.4: |M| = Θ(∫ 1/lfs^D)), no larger: its lfs is pointwise no smaller.
 template <std::size_t D>
-OutputEstimate refuse_out_of_reach_output(const std::vector<Point<D>>& input, const Params& params, bool beta_fixed,
-                                          long long limit) {
-  OutputEstimate e = estimate_output<D>(input, params.rho);
+OutputEstimate refuse_out_of_reach_output(const std::vector<Point<D>>& input, const std::vector<WsUpdate<D>>& updates,
+                                          const Params& params, bool beta_fixed, long long limit) {
+  std::vector<Point<D>> held = input;
+  std::size_t insertions = 0;
+  if (!updates.empty()) {
+    std::set<Point<D>> all(input.begin(), input.end());  // a duplicate input is left to the construction
+    for (const WsUpdate<D>& u : updates)
+      if (u.insert && all.insert(u.p).second) ++insertions;
+    held.assign(all.begin(), all.end());
+  }
+  OutputEstimate e = estimate_output<D>(held, params.rho);
   if (limit == 0 || e.vertices <= double(limit)) return e;
   std::string msg = "the output is estimated at about " + round_num(e.vertices) + " vertices (n = " +
-                    std::to_string(e.input) + ", " + std::to_string(e.leaves) + " squares in the 2^D-tree, depth " +
+                    std::to_string(e.input) +
+                    (insertions > 0 ? " with the " + std::to_string(insertions) + " new points of --updates" : "") +
+                    ", " + std::to_string(e.leaves) + " squares in the 2^D-tree, depth " +
                     std::to_string(e.depth) + ", rho = " + json_num(params.rho) + ", dim " + std::to_string(D) +
                     "), more than --max-vertices " + std::to_string(limit) + "; ";
   std::string fit;
@@ -80,7 +93,7 @@ int run(const Args& args, const std::string& input_path, Params params) {
   OutputFile picture;  // opened before the run (a bad path fails fast), removed if the run fails
   if (auto f = args.value("svg")) picture.open(*f, "--svg");
   const OutputEstimate estimate =
-      refuse_out_of_reach_output<D>(input, params, args.value("beta").has_value(),
+      refuse_out_of_reach_output<D>(input, updates, params, args.value("beta").has_value(),
                                     args.integer("max-vertices", default_max_vertices(D), 0, 1LL << 53));
   Progress progress(args.has("quiet"));
   const std::string building = "kmr wellspaced: StableWS on " + std::to_string(input.size()) + " points";

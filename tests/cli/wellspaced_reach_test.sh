@@ -69,4 +69,20 @@ run limit-word 20 wellspaced --dim 2 --max-vertices many "$tmp/ulp2"
 run limit-negative 20 wellspaced --dim 2 --max-vertices -5 "$tmp/ulp2"
 [ $rc -eq 2 ] && grep -qF -- '--max-vertices' "$tmp/err" && ok || bad "limit-negative: rc=$rc $(head -c 200 "$tmp/err")"
 
+# 5. The estimate covers the points --updates inserts: three points far apart fit in 3000 vertices
+#    at ρ = 1.2, but inserting the 1-ulp pair does not; refused upfront naming the insertions, and
+#    the suggested ρ then runs all the updates within the limit.
+printf '0.1 0.1\n0.9 0.9\n0.2 0.8\n' >"$tmp/far3"
+printf '+ 0.5 0.5\n+ 0.50000000000000011 0.5\n- 0.2 0.8\n' >"$tmp/far3.up"
+run updates-fit 60 wellspaced --dim 2 --rho 1.2 --beta 3 --max-vertices 3000 "$tmp/far3"
+[ $rc -eq 0 ] && ok || bad "updates-fit: the input alone: rc=$rc $(head -c 200 "$tmp/err")"
+run updates 60 wellspaced --dim 2 --rho 1.2 --beta 3 --max-vertices 3000 --updates "$tmp/far3.up" "$tmp/far3"
+sugg=$(grep -oE 'e\.g\. --rho [0-9.]+' "$tmp/err" | sed 's/.*--rho //')
+if [ $rc -eq 2 ] && [ ! -s "$tmp/out" ] && grep -qF 'with the 2 new points of --updates' "$tmp/err" && [ -n "$sugg" ]; then
+  ok
+  run updates-fits 60 wellspaced --dim 2 --rho "$sugg" --beta 3 --max-vertices 3000 --updates "$tmp/far3.up" "$tmp/far3"
+  m=$(wc -l <"$tmp/out")
+  [ $rc -eq 0 ] && [ "$m" -le 3000 ] && ok || bad "updates-fits: --rho $sugg: rc=$rc, $m vertices"
+else bad "updates: rc=$rc (want 2 naming the insertions and a rho), stderr: $(head -c 300 "$tmp/err")"; fi
+
 finish "wellspaced_reach_test"
