@@ -71,8 +71,8 @@ int kmesh_command(const Argv& argv) {
                  "  --svg F       draw the mesh at time T: Delaunay triangles, input vertices filled, Steiner vertices open\n"
                  "stdout: JSON {\"time\", \"vertices\": [[x, y, kind]...] (kind 1 = Steiner), \"triangles\" (ccw),\n"
                  "\"events\", \"batches\" (certificate failures and their lattice intervals up to T), \"certificates\" (of §4.3\n"
-                 "certificates of this mesh), \"first_failure\" (the first lattice interval, within 2^20, where one of\n"
-                 "them fails after T; null if none)}. Bad input also: identical trajectories, two points colliding before T.\n"
+                 "certificates of this mesh), \"first_failure\" (the first lattice interval (kδ, (k+1)δ] after T, within\n"
+                 "2^20, in which one of them fails, \"time\" its start T + kδ; null if none)}. Bad input also: identical trajectories, two points colliding before T.\n"
                  "Bad input: a message naming the file and line, exit status 2.\n";
     return 0;
   }
@@ -257,8 +257,8 @@ int kmesh_command(const Argv& argv) {
     auto& t = m.triangles[i];
     out << (i ? ", " : "") << "[" << t[0] << ", " << t[1] << ", " << t[2] << "]";
   }
-  // The certificates of §4.3 that certify this mesh, and the first lattice interval (within 2^20
-  // time units) in which one of them fails: the mesh at T = 0 is valid until then.
+  // The certificates of §4.3 that certify this mesh, and the first lattice interval (kδ, (k+1)δ]
+  // (within 2^20 time units) in which one of them fails: the mesh is valid until T + kδ.
   auto certs = certificates(m);
   auto fail = first_failure(certs, static_cast<int>(bits), Dyadic(1 << 20));
   std::size_t event_batches = 0;

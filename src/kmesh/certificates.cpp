@@ -220,7 +220,8 @@ Certificate build_one(const CertificateSpec& sp, MovingPoints& mp) {
       out.value = to_poly(d2(satellite(), mp(sp.b)) - DPoly(threshold2(1, sp.rank - 2)));
       break;
     case Certificate::Delaunay:
-      if (sp.d < 0)
+      out.ccw = sp.d < 0;
+      if (out.ccw)
         out.value = to_poly(geometry::orientation_value<DPoly>(mp(sp.a), mp(sp.b), mp(sp.c)));
       else
         out.value = to_poly(-geometry::side_of_oriented_circle_value<DPoly>(mp(sp.a), mp(sp.b), mp(sp.c), mp(sp.d)));
@@ -264,17 +265,17 @@ poly::Polynomial shifted_by_dyadic(const poly::Polynomial& p, const Dyadic& d) {
 bool holds_at(const Certificate& c, const Dyadic& t) {
   if (c.value.is_zero()) return c.kind == Certificate::Delaunay || !c.strict;
   int s = c.value.sign_at(t);
-  if (s == 0 && c.kind == Certificate::Delaunay) return true;  // cocircular now: the perturbation decides
+  if (s == 0 && c.kind == Certificate::Delaunay && !c.ccw) return true;  // cocircular now: the perturbation decides
   return c.strict ? s > 0 : s >= 0;
 }
 
-bool fails_at_zero(const Certificate& c) { return c.strict && c.kind != Certificate::Delaunay; }
+bool fails_at_zero(const Certificate& c) { return c.strict && (c.kind != Certificate::Delaunay || c.ccw); }
 
 std::optional<exact::Integer> failure_batch(const poly::LatticeRootSolver& s, bool zero_fails, const Dyadic& from,
                                             const Dyadic& horizon) {
   const int bits = s.lattice_bits();
   // One interval past the horizon: a strict certificate vanishing at the horizon is a batch before it.
-  auto f = s.next_failure_after(from, horizon + Dyadic(1, -bits));
+  auto f = s.next_failure_after(from, horizon + Dyadic(1, -bits), zero_fails);
   if (!f) return std::nullopt;
   exact::Integer k = *f;
   if (zero_fails && s.lattice_point(k) > from && s.polynomial().sign_at(k, bits) == 0) k -= 1;
@@ -289,7 +290,7 @@ std::optional<std::pair<exact::Integer, std::size_t>> first_failure(const std::v
     if (certs[i].value.degree() <= 0) continue;
     poly::LatticeRootSolver solver(certs[i].value, bits);
     Dyadic h = best ? Dyadic(best->first, -bits) : horizon;
-    auto k = solver.next_failure_after(Dyadic(0), h);
+    auto k = failure_batch(solver, fails_at_zero(certs[i]), Dyadic(0), h);
     if (k && (!best || *k < best->first)) best = {{*k, i}};
   }
   return best;

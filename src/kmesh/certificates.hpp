@@ -17,9 +17,9 @@
 //                  A polynomial ≡ 0 (four satellites of one nucleus, rigidly cocircular) is decided
 //                  by the symbolic perturbation for all times and never fails.
 // Guarantees (tests/kmesh/certificates_test.cpp): every certificate holds at t = 0 (L4.3.1 at the
-// construction time); first_failure() is the first lattice interval where one changes sign; at any
-// dyadic time before it, the mesh moved to that time still passes the brute-force spanner, ball and
-// Delaunay checks.
+// construction time); first_failure() is the first lattice interval (kδ, (k+1)δ] where one fails
+// (failure_batch); at any dyadic time up to kδ, the mesh moved to that time still passes the
+// brute-force spanner, ball and Delaunay checks.
 #include <functional>
 #include <optional>
 #include <vector>
@@ -38,6 +38,7 @@ struct Certificate {
   bool strict;
   poly::Polynomial value;  // holds while value(t) ≥ 0 (strict: > 0)
   int ray = -1;  // ball-not-empty: the satellite's ray (with its rank and nucleus a, its name)
+  bool ccw = false;  // Delaunay: an orientation certificate (a triangle stays counter-clockwise)
 };
 
 const char* kind_name(Certificate::Kind k);
@@ -72,11 +73,14 @@ std::vector<Certificate> build_certificates(const Mesh& m, const std::vector<Cer
 // p(t + d) for a dyadic d, times a positive power of two (same signs; integer coefficients).
 poly::Polynomial shifted_by_dyadic(const poly::Polynomial& p, const Dyadic& d);
 
-// Whether c holds at the dyadic time t (exact; an identically zero Delaunay polynomial holds).
+// Whether c holds at the dyadic time t (exact; an identically zero Delaunay polynomial holds — a
+// triangle's cannot be, its vertices are not collinear at construction — and so does an in-circle
+// one at a zero: cocircular, the perturbation decides; a triangle flat at t does not).
 bool holds_at(const Certificate& c, const Dyadic& t);
 
-// Whether c is violated where its polynomial vanishes: a strict certificate, except a Delaunay one
-// (a zero of an orientation or in-circle polynomial is decided by the symbolic perturbation).
+// Whether c is violated where its polynomial vanishes: a strict certificate, except a Delaunay
+// in-circle one (a zero of it is decided by the symbolic perturbation). A triangle's orientation
+// certificate fails at its zero: the triangle is flat there (L4.3.1).
 bool fails_at_zero(const Certificate& c);
 
 // The batch of a certificate (δ = 2^−bits, s its polynomial's solver): the first lattice index
@@ -84,12 +88,17 @@ bool fails_at_zero(const Certificate& c);
 // leaves it holding at every lattice time before. The solver's sign-change interval f, [fδ, (f+1)δ),
 // is batch f, except when the certificate fails at a zero (fails_at_zero) and vanishes at fδ > from:
 // it is violated at fδ itself, so it is batch f − 1, repaired at fδ (and found before a horizon fδ).
-// A zero of even multiplicity is no failure (the solver's semantics), nor is a zero at `from`.
+// Such a certificate also fails at a zero at a lattice time fδ > from without a sign change across
+// [fδ, (f+1)δ) (a zero of even multiplicity, or a second root in that interval: next_failure_after
+// with zero_fails); otherwise a zero of even multiplicity is no failure (the solver's semantics).
+// A zero at `from` is never one.
 std::optional<exact::Integer> failure_batch(const poly::LatticeRootSolver& s, bool zero_fails, const Dyadic& from,
                                             const Dyadic& horizon);
 
-// The first lattice interval index k (δ = 2^−bits) with kδ ≥ 0 and kδ < horizon in which some
-// certificate changes sign, and that certificate; nullopt if none does.
+// The first batch k (δ = 2^−bits; failure_batch with fails_at_zero, from 0) with kδ < horizon, i.e.
+// the first lattice interval (kδ, (k+1)δ] in which some certificate fails, and that certificate
+// (the lowest index among those of that batch); nullopt if none does. Every certificate holds at
+// every time in [0, kδ].
 std::optional<std::pair<exact::Integer, std::size_t>> first_failure(const std::vector<Certificate>& certs, int bits,
                                                                     const Dyadic& horizon);
 

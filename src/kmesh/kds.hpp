@@ -14,7 +14,8 @@
 //    now() (so the mesh is certified until the next batch's interval);
 //  * a batch is the set of certificates whose first failure falls in one lattice interval
 //    (kδ, (k+1)δ], repaired at (k+1)δ (failure_batch in kmesh/certificates.hpp: a strict certificate
-//    vanishing at (k+1)δ is violated there, so it is in that batch); a batch of Delaunay
+//    vanishing at (k+1)δ is violated there, so it is in that batch, also when it only touches 0
+//    there, and so is a triangle flat at (k+1)δ; a cocircular in-circle one is not); a batch of Delaunay
 //    certificates only (no spanner or ball certificate) changes no vertex of M;
 //  * mesh() passes the brute-force checks of an updated mesh (kmesh/invariants.hpp,
 //    check_all_updated: spanner, U1, L4.3.2, L4.2.6, L4.2.9, L4.2.10, Delaunay, 9/2-well-spaced);
@@ -57,7 +58,7 @@ class KineticMesh {
   KineticMesh(std::vector<InputPoint> trajectories, int lattice_bits);
   // Advances to time T (≥ now), processing every batch on the way; `after` is called after each.
   // A batch is repaired at the end (k+1)δ of its interval and holds the certificates failing in
-  // (kδ, (k+1)δ] (failure_batch: a strict one vanishing at (k+1)δ is violated there), so at a lattice
+  // (kδ, (k+1)δ] (failure_batch: one failing at its zero, fails_at_zero, is violated at (k+1)δ if it vanishes there), so at a lattice
   // T every certificate holds at now() = T, also one failing exactly at T. T off the lattice: the
   // batch of the interval holding T is repaired at that interval's end, so now() ends after T (by
   // less than δ); with no batch there, now() = T (the CLI takes lattice times only).

@@ -9,8 +9,9 @@
 // Guarantees (tests/kmesh/rebuild_simulation_test.cpp):
 //  * mesh_at(t) for the current time t is the current mesh moved to t, and every certificate holds at t;
 //  * a batch is the set of certificates whose first failure falls in one lattice interval
-//    (kδ, (k+1)δ] (failure_batch in kmesh/certificates.hpp), repaired at (k+1)δ: a strict certificate
-//    vanishing at a lattice time is repaired there, also at the horizon of run_until;
+//    (kδ, (k+1)δ] (failure_batch in kmesh/certificates.hpp), repaired at (k+1)δ: a certificate that
+//    fails at its zero (fails_at_zero) vanishing at a lattice time is repaired there, with or without
+//    a sign change, also at the horizon of run_until;
 //  * collisions of two trajectories at a time in [now, T] are refused by check_collisions.
 #include <cstdint>
 #include <functional>

@@ -161,12 +161,14 @@ std::vector<LatticeInterval> LatticeRootSolver::isolate(const Dyadic& from, cons
   return out;
 }
 
-std::optional<Integer> LatticeRootSolver::next_failure_after(const Dyadic& t, const Dyadic& horizon) const {
+std::optional<Integer> LatticeRootSolver::next_failure_after(const Dyadic& t, const Dyadic& horizon,
+                                                             bool zero_fails) const {
   auto [a, b] = clamp_range(lattice_ceil(t, bits_), lattice_ceil(horizon, bits_));
   if (a >= b) return std::nullopt;
   std::optional<Integer> found;
   auto first_change = [&](LatticeInterval i) {
-    if (!i.sign_change) return false;
+    bool zero_start = zero_fails && lattice_point(i.k) > t && filtered_sign_at(p_, p_approx_, i.k, bits_) == 0;
+    if (!i.sign_change && !zero_start) return false;
     found = i.k;
     return true;
   };

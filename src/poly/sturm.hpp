@@ -16,6 +16,8 @@
 //  * next_failure_after(t): the first lattice interval [kδ, (k+1)δ) with kδ ≥ t across which the
 //    sign changes, i.e. sign_before((k+1)δ) ≠ sign_before(kδ); an even-multiplicity root is no
 //    failure, and neither is a cluster of roots whose multiplicities sum to an even number.
+//    With zero_fails, an interval whose start kδ > t is a root also ends the search (for a
+//    certificate violated where it vanishes: a root of even multiplicity at a lattice time).
 //  * Identically-zero polynomials are refused with an InputError.
 #include <optional>
 #include <vector>
@@ -68,7 +70,7 @@ class LatticeRootSolver {
   int count_roots(const Dyadic& lo, const Dyadic& hi) const { return sturm().count_roots(lo, hi); }
 
   std::vector<LatticeInterval> isolate(const Dyadic& from, const Dyadic& to) const;
-  std::optional<Integer> next_failure_after(const Dyadic& t, const Dyadic& horizon) const;
+  std::optional<Integer> next_failure_after(const Dyadic& t, const Dyadic& horizon, bool zero_fails = false) const;
 
   // Distinct real roots < m / 2^s: one Sturm query (counted), for refinement below the lattice.
   int roots_below(const Integer& m, long long s) const {

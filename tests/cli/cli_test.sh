@@ -104,6 +104,19 @@ printf '0 0\n161 0 -1 0\n' >"$tmp/km14.txt"
 "$kmr" kmesh "$tmp/km14.txt" --until 1 --lattice-bits 4 --check --stats "$tmp/km14.json" >/dev/null 2>"$tmp/err"
 if [ $? -eq 0 ] && grep -qF '{"time": 1, "what": "events"' "$tmp/km14.json"; then passed=$((passed+1)); else
   failed=$((failed+1)); echo "FAIL kmesh-check-at-horizon"; cat "$tmp/err"; fi
+# The same with the reference KDS: --rebuild --check checks the last snapshot moved to T (L4.3.1).
+"$kmr" kmesh "$tmp/km14.txt" --until 1 --lattice-bits 4 --rebuild --check --stats "$tmp/km15.json" >/dev/null 2>"$tmp/err"
+if [ $? -eq 0 ] && [ ! -s "$tmp/err" ] && grep -qF '"repair": "rebuild"' "$tmp/km15.json" && grep -qF '{"time": 1, "what": "events"' "$tmp/km15.json"; then passed=$((passed+1)); else
+  failed=$((failed+1)); echo "FAIL kmesh-rebuild-check-at-horizon"; cat "$tmp/err"; fi
+# (-1,160) moving (1,0) passes (0,0) at distance exactly 160 = 20*2^3 at t = 1: ~55 strict certificates
+# touch 0 there without a sign change; both KDSs must repair them at 1 (before: --check exit 1, S1/S3).
+printf '0 0\n-1 160 1 0\n' >"$tmp/km16.txt"
+for kds in kinetic rebuild; do
+  flag=(); [ $kds = rebuild ] && flag=(--rebuild)
+  "$kmr" kmesh "$tmp/km16.txt" --until 1 --lattice-bits 4 "${flag[@]}" --check --stats "$tmp/km16.json" >/dev/null 2>"$tmp/err"
+  if [ $? -eq 0 ] && [ ! -s "$tmp/err" ] && grep -qF '{"time": 1, "what": "events"' "$tmp/km16.json"; then passed=$((passed+1)); else
+    failed=$((failed+1)); echo "FAIL kmesh-touch-at-horizon ($kds)"; cat "$tmp/err"; fi
+done
 # (0,0) moving (1,1) meets (4,4) at t = 4: refused when T ≥ 4, accepted before.
 printf '0 0 1 1\n4 4\n' >"$tmp/km7.txt"
 expect_error kmesh-collision-later 'collide at time 4' -- kmesh "$tmp/km7.txt" --until 5

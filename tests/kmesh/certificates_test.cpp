@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <map>
 #include <random>
 #include <string>
 #include <tuple>
@@ -38,6 +39,81 @@ TEST(Certificates, HandDerivedFailureTimes) {
   }
   EXPECT_TRUE(pc);
   EXPECT_TRUE(edge);
+}
+
+namespace {
+Integer I(int v) { return Integer(v); }
+}  // namespace
+
+// A strict certificate is violated where its polynomial vanishes, also where it only touches 0 at a
+// lattice time without changing sign (an even-multiplicity root: the solver alone sees no failure
+// there). Lattice 2^−2; (t − 1)² vanishes at t = 1 = 4δ, so the strict certificate fails in
+// (3δ, 4δ], batch 3, repaired at 1; a non-strict one and a Delaunay in-circle one never fail; from
+// t = 1 itself the zero is no failure. (t − 1)²(3 − t): the touch at 1 comes first (batch 3); for
+// the non-strict certificate the sign change in [3, 3 + δ) is the failure (batch 12). A simple zero
+// at 1 with a second root in the same lattice interval is no sign change either.
+TEST(Certificates, L4_3_1_StrictZeroAtALatticeTimeWithoutSignChangeFailsThere) {
+  RecordProperty("claim", "L4.3.1");
+  const kmr::poly::Polynomial touch(std::vector<Integer>{I(1), I(-2), I(1)});
+  const kmr::poly::Polynomial touch_then_cross = touch * kmr::poly::Polynomial(std::vector<Integer>{I(3), I(-1)});
+  Certificate sep{Certificate::Separation, 0, 1, 0, true, touch};
+  Certificate edge{Certificate::Edge, 0, 1, 0, false, touch};
+  Certificate circle{Certificate::Delaunay, 0, 1, 0, true, touch};
+  EXPECT_FALSE(holds_at(sep, Dyadic(1)));
+  EXPECT_TRUE(holds_at(edge, Dyadic(1)));
+  EXPECT_TRUE(holds_at(circle, Dyadic(1)));
+  kmr::poly::LatticeRootSolver s(touch, 2);
+  EXPECT_EQ(failure_batch(s, fails_at_zero(sep), Dyadic(0), Dyadic(4)), std::optional<Integer>(I(3)));
+  EXPECT_EQ(failure_batch(s, fails_at_zero(edge), Dyadic(0), Dyadic(4)), std::nullopt);
+  EXPECT_EQ(failure_batch(s, fails_at_zero(circle), Dyadic(0), Dyadic(4)), std::nullopt);
+  EXPECT_EQ(failure_batch(s, fails_at_zero(sep), Dyadic(1), Dyadic(4)), std::nullopt) << "a zero at `from`";
+  // The horizon 1 still sees the batch that repairs at 1 (interval (3δ, 4δ]); the horizon 3δ does not.
+  EXPECT_EQ(failure_batch(s, fails_at_zero(sep), Dyadic(0), Dyadic(1)), std::optional<Integer>(I(3)));
+  EXPECT_EQ(failure_batch(s, fails_at_zero(sep), Dyadic(0), Dyadic(3, -2)), std::nullopt);
+  // A simple zero at 1 and another at 9/8 in the same interval [4δ, 5δ): no sign change across it.
+  const kmr::poly::Polynomial two_in_one(std::vector<Integer>{I(9), I(-17), I(8)});
+  kmr::poly::LatticeRootSolver s1(two_in_one, 2);
+  Certificate sep2{Certificate::Separation, 0, 1, 0, true, two_in_one};
+  EXPECT_FALSE(holds_at(sep2, Dyadic(1)));
+  EXPECT_EQ(failure_batch(s1, fails_at_zero(sep2), Dyadic(0), Dyadic(4)), std::optional<Integer>(I(3)));
+  kmr::poly::LatticeRootSolver s2(touch_then_cross, 2);
+  sep.value = edge.value = touch_then_cross;
+  EXPECT_EQ(failure_batch(s2, fails_at_zero(sep), Dyadic(0), Dyadic(8)), std::optional<Integer>(I(3)));
+  EXPECT_EQ(failure_batch(s2, fails_at_zero(edge), Dyadic(0), Dyadic(8)), std::optional<Integer>(I(12)));
+  EXPECT_EQ(failure_batch(s2, fails_at_zero(sep), Dyadic(1), Dyadic(8)), std::optional<Integer>(I(11)));
+}
+
+// A triangle whose orientation reaches 0 is flat there, and that is no cocircularity the symbolic
+// perturbation decides: (0, 0), (4, 0), (2, 2 − t) has orientation 8 − 4t, flat at t = 2 = 16δ
+// (lattice 2^−3), so its certificate fails in (15δ, 16δ], batch 15, repaired at 2; an in-circle
+// certificate with the same polynomial is excused at its zero (batch 16, the sign change). Every
+// triangle of a constructed mesh has an orientation certificate (ccw), every interior edge an
+// in-circle one.
+TEST(Certificates, L4_3_1_FlatTriangleFailsAtItsZero) {
+  RecordProperty("claim", "L4.3.1");
+  const kmr::poly::Polynomial flat_at_2(std::vector<Integer>{I(8), I(-4)});
+  Certificate tri{Certificate::Delaunay, 0, 1, 0, true, flat_at_2};
+  tri.ccw = true;
+  Certificate circle{Certificate::Delaunay, 0, 1, 0, true, flat_at_2};
+  EXPECT_FALSE(holds_at(tri, Dyadic(2)));
+  EXPECT_TRUE(holds_at(tri, Dyadic(15, -3)));
+  EXPECT_TRUE(holds_at(circle, Dyadic(2)));
+  kmr::poly::LatticeRootSolver s(flat_at_2, 3);
+  EXPECT_EQ(failure_batch(s, fails_at_zero(tri), Dyadic(0), Dyadic(4)), std::optional<Integer>(I(15)));
+  EXPECT_EQ(failure_batch(s, fails_at_zero(circle), Dyadic(0), Dyadic(4)), std::optional<Integer>(I(16)));
+
+  Mesh m = construct({{I(0), I(0)}, {I(5), I(1), I(0), I(1)}, {I(2), I(7)}});
+  std::size_t ccw = 0, in_circle = 0;
+  for (auto& c : certificates(m))
+    if (c.kind == Certificate::Delaunay) (c.ccw ? ccw : in_circle) += 1;
+  std::map<std::pair<int, int>, int> sides;  // undirected edge → triangles having it
+  for (auto& t : m.triangles)
+    for (int i = 0; i < 3; ++i) sides[std::minmax(t[i], t[(i + 1) % 3])] += 1;
+  std::size_t interior = 0;
+  for (auto& [e, n] : sides) interior += n == 2;
+  EXPECT_GT(m.triangles.size(), 0u);
+  EXPECT_EQ(ccw, m.triangles.size());
+  EXPECT_EQ(in_circle, interior);
 }
 
 TEST(Certificates, L4_3_1_HoldAtZeroAndCertifyUntilTheFirstFailure) {

@@ -239,12 +239,12 @@ std::string first_failing_now(const KineticMesh& k) {
   return "";
 }
 
-// Certificates violated where they vanish (strict, not Delaunay: holds_at), whose polynomial (of t − now)
+// Certificates violated where they vanish (fails_at_zero: strict, not an in-circle one), whose polynomial (of t − now)
 // vanishes at dt > 0: counted independently of the KDS's scheduling, from the exact sign.
 int strict_vanishing_at(const std::vector<Certificate>& cs, const Dyadic& dt) {
   int n = 0;
   for (auto& c : cs)
-    if (c.strict && c.kind != Certificate::Delaunay && c.value.degree() > 0 && c.value.sign_at(dt) == 0) ++n;
+    if (fails_at_zero(c) && c.value.degree() > 0 && c.value.sign_at(dt) == 0) ++n;
   return n;
 }
 
@@ -270,6 +270,31 @@ TEST(KineticMesh, L4_3_1_StrictCertificateVanishingAtTheHorizonIsRepairedThere) 
   }
   EXPECT_GE(vanishing, 1) << "the input has no strict certificate vanishing at a step's end";
   std::cout << "strict certificates vanishing at the end of a step: " << vanishing << "\n";
+}
+
+// A strict certificate that touches 0 at a lattice time without changing sign is violated there
+// too. (−1, 160) moves by (1, 0) past (0, 0): at t = 1 their distance has its minimum, exactly
+// 160 = 20·2^3, so their potential-neighbour certificate at rank 3 (|xy| > 160) and about 50 between
+// their satellites touch 0 at 1 (double roots); lattice 2^−4, no other certificate fails in
+// (15/16, 1]. Before, no batch held them: at t = 1 the mesh broke S1 and S3 (`kmr kmesh --check`
+// exit 1 on this input, both KDSs).
+TEST(KineticMesh, L4_3_1_StrictCertificateTouchingZeroAtALatticeTimeIsRepairedThere) {
+  RecordProperty("claim", "L4.3.1");
+  KineticMesh k({mv(0, 0), mv(-1, 160, 1, 0)}, 4);
+  k.run_until(Dyadic(7, -3));
+  int touching = 0;  // certificates vanishing at 1 with the same sign on both sides (exact signs)
+  const Dyadic dt = Dyadic(1) - k.now(), eps(1, -30);
+  for (auto& c : k.current_certificates())
+    if (fails_at_zero(c) && c.value.degree() > 0 && c.value.sign_at(dt) == 0 && c.value.sign_at(dt - eps) == c.value.sign_at(dt + eps))
+      ++touching;
+  EXPECT_GE(touching, 1) << "the input has no strict certificate touching 0 at t = 1";
+  k.run_until(Dyadic(1), [&](const Batch& b) { EXPECT_EQ(first_failing_now(k), "") << "batch at " << b.time.to_decimal(); });
+  EXPECT_EQ(k.now(), Dyadic(1));
+  ASSERT_FALSE(k.batches().empty());
+  EXPECT_EQ(k.batches().back().time, Dyadic(1)) << "no batch at the touch";
+  EXPECT_EQ(first_failing_now(k), "");
+  EXPECT_EQ(failures(check_all_updated(k.mesh())), "");
+  std::cout << "strict certificates touching 0 at t = 1: " << touching << "\n";
 }
 
 // A name comparison of kept and recomputed certificates reported a difference on this valid run

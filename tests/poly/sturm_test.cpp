@@ -129,6 +129,19 @@ TEST(LatticeRootSolver, A2_1_NextFailureHandDerived) {
   EXPECT_EQ(lattice_ceil(Dyadic::parse("0.375"), 2), Integer(2));
   EXPECT_EQ(lattice_ceil(Dyadic::parse("-0.375"), 2), Integer(-1));
   EXPECT_GT(s.sturm_queries, 0);
+  // zero_fails: an interval starting at a root after t ends the search too, with or without a sign
+  // change across it — here the double root at 1, first; a root at t itself does not (from 1: the
+  // triple root at 2, a sign change). (t − 1)(8t − 9): roots 1 and 9/8 in one interval [1, 5/4) of
+  // 2^−2, no sign change anywhere, so no failure without zero_fails and interval 4 with it.
+  // (8t − 1)(4t − 1)² at 2^−2: the sign change in [0, 1/4) comes before the double root at 1/4.
+  EXPECT_EQ(s.next_failure_after(Dyadic(0), Dyadic(10), true), Integer(1));
+  EXPECT_EQ(s.next_failure_after(Dyadic(1), Dyadic(10), true), Integer(2));
+  EXPECT_EQ(s.next_failure_after(Dyadic(0), Dyadic(1), true), std::nullopt);  // horizon excludes k = 1
+  LatticeRootSolver two(P({-1, 1}) * P({-9, 8}), 2);
+  EXPECT_EQ(two.next_failure_after(Dyadic(0), Dyadic(10)), std::nullopt);
+  EXPECT_EQ(two.next_failure_after(Dyadic(0), Dyadic(10), true), Integer(4));
+  EXPECT_EQ(two.next_failure_after(Dyadic(1), Dyadic(10), true), std::nullopt);  // the zero at t itself
+  EXPECT_EQ(LatticeRootSolver(c, 2).next_failure_after(Dyadic(0), Dyadic(1), true), Integer(0));
 }
 
 }  // namespace
