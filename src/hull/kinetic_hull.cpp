@@ -673,6 +673,13 @@ void KineticHull::check_simulator_counts() const {
   KMR_CHECK(static_cast<long long>(live_certificates()) == c.live(),
             "kinetic hull: " + std::to_string(live_certificates()) + " live certificates, the simulator holds " +
                 std::to_string(c.live()));
+  certs_.for_each([](const CertificateKey& key, const Registration& reg) {
+    KMR_CHECK(CertificateHash{}(key) == reg.cert->name,
+              "kinetic hull: certificate (" + std::to_string(key[0]) + ", " + std::to_string(key[1]) + ", " +
+                  std::to_string(key[2]) + ", " + std::to_string(key[3]) + ", " + std::to_string(key[4]) +
+                  ") is hashed " + std::to_string(CertificateHash{}(key)) + ", its traceable is named " +
+                  std::to_string(reg.cert->name));
+  });
 }
 
 std::vector<KineticHull::CertificateKey> KineticHull::certificate_keys() const {

@@ -90,8 +90,10 @@ class KineticHull {
   // The hull's certificate bookkeeping agrees with its simulator's (issue 9; a check after each
   // batch in tests and in `kmr simulate hull --check-every`): every certificate handed to the
   // simulator was counted once (certificates_created == the simulator's created) and exactly the
-  // live ones are scheduled (live_certificates() == the simulator's live). Else a ContractError
-  // naming both counts. Meaningful when the simulator serves this hull alone, from its start.
+  // live ones are scheduled (live_certificates() == the simulator's live); and every live
+  // certificate's table hash (CertificateHash of its key) is its traceable's allocation name, which
+  // init_certificate and certificate_released pass instead of hashing. Else a ContractError naming
+  // both values. Meaningful when the simulator serves this hull alone, from its start.
   void check_simulator_counts() const;
   const sac::Runtime& runtime() const { return rt_; }
   const std::vector<MovingPoint>& points() const { return pts_; }
