@@ -3,6 +3,8 @@
 // first k with kδ ≥ t, kδ < horizon and brute_sign_before((k+1)δ) ≠ brute_sign_before(kδ)
 // (Taylor expansion, fuzz_common.hpp), or none. It must also equal the first sign-changing interval
 // that isolate reports, and sign_before / sign_after at lattice points match the Taylor signs.
+// With zero_fails (Chapter 4's strict certificates) the answer is the first such k, or the first
+// k with kδ > t at which p is exactly zero (brute_sign), whichever comes first.
 #include <optional>
 
 #include "fuzz_common.hpp"
@@ -29,6 +31,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
   auto have = solver.next_failure_after(t, horizon);
   FUZZ_CHECK(have == want, what + " t = " + t.to_decimal());
+  std::optional<Integer> want_zero;
+  for (Integer k = kt; k < c.k0 + c.width && (!want || k <= *want); ++k)
+    if (brute_sign(c.p, k, static_cast<unsigned>(c.bits)) == 0 && Dyadic(k, -c.bits) > t) {
+      want_zero = k;
+      break;
+    }
+  if (!want_zero) want_zero = want;
+  auto have_zero = solver.next_failure_after(t, horizon, /*zero_fails=*/true);
+  FUZZ_CHECK(have_zero == want_zero, what + " zero_fails, t = " + t.to_decimal());
   std::optional<Integer> from_isolate;
   for (const auto& i : solver.isolate(t, horizon))
     if (i.sign_change) {

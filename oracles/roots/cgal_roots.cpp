@@ -70,7 +70,8 @@ OracleRoots oracle_real_roots(const std::vector<exact::Integer>& coefficients, i
       // root ≥ khi·δ exactly?
       k = ak.compare_1_object()(root, lattice_point(khi, lattice_bits)) == CGAL::SMALLER ? klo : khi;
     }
-    out.roots.push_back(OracleRoot{k, static_cast<int>(mult)});
+    bool on = ak.compare_1_object()(root, lattice_point(k, lattice_bits)) == CGAL::EQUAL;
+    out.roots.push_back(OracleRoot{k, static_cast<int>(mult), on});
   }
   return out;
 }
@@ -89,6 +90,7 @@ std::vector<OracleInterval> lattice_intervals(const OracleRoots& r, const exact:
     if (out.empty() || out.back().k != root.k) out.push_back(OracleInterval{root.k, 0, 0});
     out.back().distinct += 1;
     out.back().multiplicity_sum += root.multiplicity;
+    out.back().starts_at_root = out.back().starts_at_root || root.on_lattice;
   }
   return out;
 }
@@ -97,6 +99,13 @@ std::optional<exact::Integer> first_sign_change(const OracleRoots& r, const exac
                                                 const exact::Integer& k_to) {
   for (const auto& i : lattice_intervals(r, k_from, k_to))
     if (i.sign_change()) return i.k;
+  return std::nullopt;
+}
+
+std::optional<exact::Integer> first_failure_zero_fails(const OracleRoots& r, const exact::Integer& k_from,
+                                                       const exact::Integer& k_to) {
+  for (const auto& i : lattice_intervals(r, k_from, k_to))
+    if (i.sign_change() || (i.starts_at_root && i.k > k_from)) return i.k;
   return std::nullopt;
 }
 

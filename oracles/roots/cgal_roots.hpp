@@ -12,6 +12,9 @@
 //  * lattice_intervals / first_sign_change derive from that list, by counting only, the answers the
 //    library's LatticeRootSolver must give: the distinct roots per lattice interval, and whether the
 //    sign changes across it (the multiplicities of its roots sum to an odd number).
+//  * OracleRoot::on_lattice says whether the root equals kδ exactly (an exact comparison), and
+//    first_failure adds Chapter 4's rule to first_sign_change: an interval that starts at a root
+//    after the start also ends the search (LatticeRootSolver::next_failure_after's zero_fails).
 //  * The zero polynomial is refused with std::invalid_argument.
 // This header is CGAL-free so that tests including it compile fast; CGAL lives in cgal_roots.cpp.
 #include <optional>
@@ -25,6 +28,7 @@ namespace kmr::oracles {
 struct OracleRoot {
   exact::Integer k;  // the root lies in [kδ, (k+1)δ)
   int multiplicity = 0;
+  bool on_lattice = false;  // the root is kδ exactly
 };
 
 struct OracleRoots {
@@ -40,6 +44,7 @@ struct OracleInterval {
   exact::Integer k;
   int distinct = 0;        // distinct roots in [kδ, (k+1)δ)
   int multiplicity_sum = 0;
+  bool starts_at_root = false;  // one of its roots is kδ
   bool sign_change() const { return multiplicity_sum % 2 == 1; }
 };
 
@@ -49,5 +54,8 @@ std::vector<OracleInterval> lattice_intervals(const OracleRoots& r, const exact:
 // The first k in [k_from, k_to) whose interval's multiplicities sum to an odd number.
 std::optional<exact::Integer> first_sign_change(const OracleRoots& r, const exact::Integer& k_from,
                                                 const exact::Integer& k_to);
+// The first k in [k_from, k_to) whose interval changes sign, or with k > k_from and a root at kδ.
+std::optional<exact::Integer> first_failure_zero_fails(const OracleRoots& r, const exact::Integer& k_from,
+                                                       const exact::Integer& k_to);
 
 }  // namespace kmr::oracles

@@ -1,6 +1,6 @@
 // The lattice root solver (src/poly/sturm.hpp) against CGAL's Algebraic_kernel_d_1 (cgal_roots.hpp):
 // the number of distinct real roots, which lattice intervals hold roots and how many, whether the
-// sign changes across each, and next_failure_after, on hand-picked hard cases and random inputs.
+// sign changes across each, and next_failure_after (with and without zero_fails), on hand-picked hard cases and random inputs.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -54,6 +54,17 @@ std::size_t expect_agrees(const Polynomial& p, int bits, const Dyadic& from, con
     EXPECT_EQ(have.has_value(), want.has_value()) << "from k=" << k;
     if (!have || !want) break;
     EXPECT_EQ(*have, *want) << "from k=" << k;
+    if (*have != *want) break;
+    k = *want + 1;
+  }
+  // The same walk with zero_fails: an interval starting at a root after the start also fails.
+  k = ka;
+  for (int guard = 0; guard < 64; ++guard) {
+    auto want = kmr::oracles::first_failure_zero_fails(oracle, k, kb);
+    auto have = solver.next_failure_after(Dyadic(k, -bits), to, /*zero_fails=*/true);
+    EXPECT_EQ(have.has_value(), want.has_value()) << "zero_fails from k=" << k;
+    if (!have || !want) break;
+    EXPECT_EQ(*have, *want) << "zero_fails from k=" << k;
     if (*have != *want) break;
     k = *want + 1;
   }

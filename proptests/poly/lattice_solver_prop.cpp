@@ -300,6 +300,37 @@ RC_GTEST_PROP(LatticeSolverProp, A2_1_NextFailureIsFirstOddInterval, ()) {
   RC_ASSERT(solver.next_failure_after(t, horizon) == want);
 }
 
+// Chapter 4's variant (zero_fails): an interval that starts at a root after t also fails, with or
+// without a sign change.
+RC_GTEST_PROP(LatticeSolverProp, A2_1_NextFailureWithZeroFailsAlsoStopsAtALatticeRootAfterT, ()) {
+  ::testing::Test::RecordProperty("claim", "A2.1-next-failure");
+  Planted plant = *gen_planted();
+  LatticeRootSolver solver(plant.polynomial(), plant.bits);
+  Dyadic t = gen_dyadic_near(plant.bits);
+  // Half the time start exactly at a planted root on the lattice: that zero is not after t.
+  for (const auto& r : plant.roots) {
+    Dyadic at(floor_div(r.num << static_cast<unsigned>(plant.bits), r.den), -plant.bits);
+    if (compare_root(r, at) == 0 && *rc::gen::arbitrary<bool>()) t = at;
+  }
+  Dyadic horizon = t + Dyadic(Integer(*rc::gen::inRange(1, 100)), 0);
+  Integer kt = t.shifted(plant.bits).ceil(), kh = horizon.shifted(plant.bits).ceil();
+  std::optional<Integer> want;
+  bool by_zero = false;
+  for (const auto& i : expected_intervals(distinct_roots(plant), plant.bits, kt, kh)) {
+    Dyadic start(i.k, -plant.bits);
+    bool root_at_start = false;
+    for (const auto& r : plant.roots) root_at_start |= compare_root(r, start) == 0;
+    if (i.sign_change || (root_at_start && start > t)) {
+      want = i.k;
+      by_zero = !i.sign_change;
+      break;
+    }
+  }
+  RC_CLASSIFY(by_zero, "stops at a zero without a sign change");
+  RC_CLASSIFY(solver.polynomial().sign_at(kt, plant.bits) == 0 && Dyadic(kt, -plant.bits) == t, "starts at a zero");
+  RC_ASSERT(solver.next_failure_after(t, horizon, /*zero_fails=*/true) == want);
+}
+
 RC_GTEST_PROP(LatticeSolverProp, InvariantUnderPositiveScalingAndMirroring, ()) {
   ::testing::Test::RecordProperty("claim", "A2.1-lattice-isolation");
   Planted plant = *gen_planted();
