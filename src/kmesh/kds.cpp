@@ -5,6 +5,7 @@
 #include <string>
 #include <tuple>
 #include <limits>
+#include <map>
 #include <set>
 
 #include "exact/error.hpp"
@@ -314,6 +315,21 @@ CheckResult check_kept_certificates(const KineticMesh& k) {
     if (!holds_at(c, Dyadic(0)))
       r.violations.push_back(std::string(kind_name(c.kind)) + " certificate of " + std::to_string(c.a) + ", " +
                              std::to_string(c.b) + " fails at the repair time " + k.now().to_decimal());
+  // A kept ball-not-empty witness must be eligible (§4.3): a vertex of M already there when its
+  // satellite was considered (id < existing); holds_at above checked that it lies in the ball.
+  std::map<std::tuple<int, int, Rank>, const Considered*> not_converted;
+  for (const auto& c : k.mesh().considered)
+    if (!c.converted) not_converted[{c.nucleus, c.ray, c.rank}] = &c;
+  for (auto& c : kept) {
+    if (c.kind != Certificate::BallNotEmpty) continue;
+    auto it = not_converted.find({c.a, c.ray, c.rank});
+    if (it == not_converted.end()) continue;  // no such satellite: the name comparison below reports it
+    if (c.b < 0 || c.b >= it->second->existing)
+      r.violations.push_back("ball-not-empty certificate of the rank-" + std::to_string(c.rank) + " satellite of " +
+                             std::to_string(c.a) + " ray " + std::to_string(c.ray) + " keeps witness " +
+                             std::to_string(c.b) + ", not among the " + std::to_string(it->second->existing) +
+                             " vertices there when it was considered, at " + k.now().to_decimal());
+  }
   using Name = std::tuple<int, Rank, bool, int, int, int, std::string>;
   auto names = [](const std::vector<Certificate>& cs) {
     std::vector<Name> out;
