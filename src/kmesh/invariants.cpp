@@ -384,10 +384,39 @@ CheckResult check_active_per_ball(const Mesh& m) {
   return r;
 }
 
+CheckResult check_rigid_boundary(const Mesh& m) {
+  CheckResult r{"L4.3.1 (rigid boundary)", {}, 0};
+  if (m.triangles.empty()) return r;
+  std::set<std::pair<int, int>> directed;
+  for (auto& t : m.triangles)
+    for (int i = 0; i < 3; ++i) directed.insert({t[i], t[(i + 1) % 3]});
+  std::set<int> boundary;
+  for (auto& e : directed)
+    if (!directed.count({e.second, e.first})) boundary.insert(e.first);
+  bool any = false;
+  Rank top = 0;  // the highest rank of a Steiner vertex
+  for (auto& in : m.info)
+    if (in.steiner) top = any ? std::max(top, in.rank) : in.rank, any = true;
+  std::map<int, int> count;  // boundary vertices per nucleus: the most frequent one is the reference
+  for (int v : boundary) ++count[m.info[static_cast<std::size_t>(v)].nucleus];
+  int nucleus = count.begin()->first;
+  for (auto& [x, c] : count)
+    if (c > count[nucleus]) nucleus = x;
+  std::string want = "the 12 satellites of rank " + std::to_string(top) + " of one nucleus";
+  if (boundary.size() != 12) add(r, "the boundary has " + std::to_string(boundary.size()) + " vertices, not " + want);
+  for (int v : boundary) {
+    const VertexInfo& in = m.info[static_cast<std::size_t>(v)];
+    if (!in.steiner || in.rank != top || in.nucleus != nucleus)
+      add(r, "boundary vertex " + std::to_string(v) + (in.steiner ? " (rank " + std::to_string(in.rank) + ", nucleus " + std::to_string(in.nucleus) + ")" : " (an input vertex)") +
+                 " is not one of " + want + " " + std::to_string(nucleus) + ": no certificate watches the boundary's convexity");
+  }
+  return r;
+}
+
 std::vector<CheckResult> check_all(const Mesh& m) {
   return {check_spanner(m.spanner),       check_ball_empty(m), check_independent_set(m), check_empty_balls(m),
           check_voronoi_candidates(m),    check_min_ranks(m),  check_delaunay(m),        check_well_spaced(m),
-          check_size_conformity(m),       check_active_per_ball(m)};
+          check_size_conformity(m),       check_active_per_ball(m), check_rigid_boundary(m)};
 }
 
 CheckResult check_active_satellites(const Mesh& m) {
@@ -418,7 +447,7 @@ CheckResult check_active_satellites(const Mesh& m) {
 std::vector<CheckResult> check_all_updated(const Mesh& m) {
   return {check_spanner(m.spanner),    check_active_satellites(m), check_independent_set(m), check_empty_balls(m),
           check_voronoi_candidates(m), check_min_ranks(m),         check_delaunay(m),        check_well_spaced(m),
-          check_size_conformity(m),    check_active_per_ball(m)};
+          check_size_conformity(m),    check_active_per_ball(m),   check_rigid_boundary(m)};
 }
 
 }  // namespace kmr::kmesh

@@ -16,6 +16,8 @@
 //    vertex is the convex hull of its Voronoi vertices and itself, spec/kmesh.md);
 //  * size conformity (L4.2.8): max lfs(v)/NN_M(v) reported (lfs = distance to the second-nearest
 //    input point), a measured constant;
+//  * rigid boundary (L4.3.1): the triangulation's boundary is the 12 satellites of one nucleus at
+//            the highest Steiner rank (no certificate watches its convexity; see below);
 //  * L4.3.3  at every rank ℓ, a closed ball of radius 2^(ℓ−3) centred at an active vertex holds at most
 //            kActivePerBall active vertices (the packing bound of the lemma's proof, derived in
 //            spec/kmesh.md); the largest count is reported.
@@ -48,6 +50,11 @@ CheckResult check_size_conformity(const Mesh& m);    // L4.2.8, measured max lfs
 // radius r): 1 + 12·5.
 inline constexpr std::size_t kActivePerBall = 61;
 CheckResult check_active_per_ball(const Mesh& m);    // L4.3.3, measured max count
+// L4.3.1's certificates watch every triangle's orientation and every interior edge, not the
+// convexity of M's boundary. None is needed while the boundary is the 12 satellites of one nucleus
+// at the highest rank of M: they move rigidly with their nucleus (a fixed convex 12-gon). Checked
+// here, not assumed (spec/kmesh.md); a mesh without triangles passes.
+CheckResult check_rigid_boundary(const Mesh& m);
 std::vector<CheckResult> check_all(const Mesh& m);
 // U1 of kmesh/update.hpp: the considered satellites are exactly the 12 per rank of the active
 // vertices (ρ_v ≤ ℓ ≤ Λ+4, and ℓ = ρ_v or v has a converted (ℓ−1)-satellite).

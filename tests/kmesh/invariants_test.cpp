@@ -217,6 +217,40 @@ TEST_F(Invariants, U1_AMissingSatelliteRecordIsReported) {
                                  std::to_string(m.considered.size()) + " belong to active vertices");
 }
 
+// The rigid-boundary judge (no certificate watches the boundary's convexity, so the boundary must
+// be the 12 top-rank satellites of one nucleus): the unbroken mesh's boundary, found here from the
+// triangles' unpaired edges, is 12 Steiner vertices of one nucleus; relabelling one of them as another
+// nucleus's, as an input vertex or as a lower rank, or dropping its triangles, is reported.
+TEST_F(Invariants, L4_3_1_RigidBoundaryJudgeReportsAForeignOrMissingBoundaryVertex) {
+  RecordProperty("claim", "L4.3.1");
+  std::set<std::pair<int, int>> edges;
+  for (auto& t : m.triangles)
+    for (int i = 0; i < 3; ++i) edges.insert({t[i], t[(i + 1) % 3]});
+  std::set<int> boundary;
+  for (auto& [a, b] : edges)
+    if (!edges.count({b, a})) boundary.insert(a);
+  ASSERT_EQ(boundary.size(), 12u);
+  const int v = *boundary.begin();
+  const int nucleus = m.info[v].nucleus;
+  for (int w : boundary) ASSERT_TRUE(m.info[w].steiner && m.info[w].nucleus == nucleus && m.info[w].rank == m.info[v].rank);
+  EXPECT_TRUE(check_rigid_boundary(m).ok()) << first(check_rigid_boundary(m));
+  const std::string name = "boundary vertex " + std::to_string(v) + " ";
+  Mesh other = m;
+  other.info[v].nucleus = nucleus == 0 ? 1 : 0;
+  EXPECT_TRUE(all_start(check_rigid_boundary(other), name + "(rank " + std::to_string(m.info[v].rank) + ", nucleus ")) << first(check_rigid_boundary(other));
+  Mesh input = m;
+  input.info[v].steiner = false;
+  EXPECT_TRUE(all_start(check_rigid_boundary(input), name + "(an input vertex)")) << first(check_rigid_boundary(input));
+  Mesh lower = m;
+  lower.info[v].rank -= 1;
+  EXPECT_TRUE(all_start(check_rigid_boundary(lower), name + "(rank " + std::to_string(m.info[v].rank - 1))) << first(check_rigid_boundary(lower));
+  Mesh dropped = m;
+  std::erase_if(dropped.triangles, [&](const std::array<int, 3>& t) { return t[0] == v || t[1] == v || t[2] == v; });
+  auto r = check_rigid_boundary(dropped);
+  ASSERT_FALSE(r.ok());
+  EXPECT_TRUE(starts(r.violations[0], "the boundary has ")) << r.violations[0];
+}
+
 // The spanner judge: two vertices moved onto one place coincide (S1); a parent that is no
 // (top+1)-center within reach, and a vertex no center covers, are reported (S2).
 TEST_F(Invariants, SpannerJudgeReportsCoincidingVerticesAndAWrongParent) {
