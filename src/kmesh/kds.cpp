@@ -5,7 +5,6 @@
 #include <string>
 #include <tuple>
 #include <limits>
-#include <map>
 #include <set>
 
 #include "exact/error.hpp"
@@ -315,20 +314,22 @@ CheckResult check_kept_certificates(const KineticMesh& k) {
     if (!holds_at(c, Dyadic(0)))
       r.violations.push_back(std::string(kind_name(c.kind)) + " certificate of " + std::to_string(c.a) + ", " +
                              std::to_string(c.b) + " fails at the repair time " + k.now().to_decimal());
-  // A kept ball-not-empty witness must be eligible (§4.3): a vertex of M already there when its
-  // satellite was considered (id < existing); holds_at above checked that it lies in the ball.
-  std::map<std::tuple<int, int, Rank>, const Considered*> not_converted;
+  // A kept ball-not-empty witness must be eligible (§4.3): an input vertex or a Steiner vertex of
+  // rank ≤ ℓ (the updater's rule: a same-rank witness is allowed, U2), read from the vertex's own
+  // record, not from Considered::existing, which keep_witness itself uses; holds_at above checked
+  // that it lies in the ball.
+  std::set<std::tuple<int, int, Rank>> not_converted;
   for (const auto& c : k.mesh().considered)
-    if (!c.converted) not_converted[{c.nucleus, c.ray, c.rank}] = &c;
+    if (!c.converted) not_converted.insert({c.nucleus, c.ray, c.rank});
   for (auto& c : kept) {
-    if (c.kind != Certificate::BallNotEmpty) continue;
-    auto it = not_converted.find({c.a, c.ray, c.rank});
-    if (it == not_converted.end()) continue;  // no such satellite: the name comparison below reports it
-    if (c.b < 0 || c.b >= it->second->existing)
+    if (c.kind != Certificate::BallNotEmpty || !not_converted.count({c.a, c.ray, c.rank})) continue;
+    const bool exists = c.b >= 0 && c.b < static_cast<int>(k.mesh().size());
+    const VertexInfo* w = exists ? &k.mesh().info[static_cast<std::size_t>(c.b)] : nullptr;
+    if (!w || (w->steiner && w->rank > c.rank))
       r.violations.push_back("ball-not-empty certificate of the rank-" + std::to_string(c.rank) + " satellite of " +
                              std::to_string(c.a) + " ray " + std::to_string(c.ray) + " keeps witness " +
-                             std::to_string(c.b) + ", not among the " + std::to_string(it->second->existing) +
-                             " vertices there when it was considered, at " + k.now().to_decimal());
+                             std::to_string(c.b) + (w ? " of rank " + std::to_string(w->rank) : std::string(", not a vertex")) +
+                             ", not an input vertex nor of rank ≤ " + std::to_string(c.rank) + ", at " + k.now().to_decimal());
   }
   using Name = std::tuple<int, Rank, bool, int, int, int, std::string>;
   auto names = [](const std::vector<Certificate>& cs) {

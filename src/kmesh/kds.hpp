@@ -125,8 +125,8 @@ class KineticMesh {
 // symmetric kinds, ball-empty included: |s v| named by its two vertices and the rank) and the
 // polynomial up to a positive factor (which tells a Delaunay in-circle's apexes apart). A
 // ball-not-empty certificate is named by its satellite (nucleus, ray, rank) only: its witness may
-// differ (above), must hold now and must be eligible: a vertex that was there when the satellite
-// was considered (id < Considered::existing). One violation per kind whose names differ, with the counts and
+// differ (above), must hold now and must be eligible: an input vertex or a Steiner vertex of
+// rank ≤ the satellite's. One violation per kind whose names differ, with the counts and
 // a first example.
 CheckResult check_kept_certificates(const KineticMesh& k);
 
