@@ -13,8 +13,9 @@
 //    library's LatticeRootSolver must give: the distinct roots per lattice interval, and whether the
 //    sign changes across it (the multiplicities of its roots sum to an odd number).
 //  * OracleRoot::on_lattice says whether the root equals kδ exactly (an exact comparison), and
-//    first_failure adds Chapter 4's rule to first_sign_change: an interval that starts at a root
-//    after the start also ends the search (LatticeRootSolver::next_failure_after's zero_fails).
+//    first_failure_zero_fails adds Chapter 4's rule to first_sign_change: an interval that starts
+//    at a root after the start also ends the search (LatticeRootSolver::next_failure_after's
+//    zero_fails).
 //  * The zero polynomial is refused with std::invalid_argument.
 // This header is CGAL-free so that tests including it compile fast; CGAL lives in cgal_roots.cpp.
 #include <optional>
