@@ -447,7 +447,7 @@ CheckResult check_active_satellites(const Mesh& m) {
 std::vector<CheckResult> check_all_updated(const Mesh& m) {
   return {check_spanner(m.spanner),    check_active_satellites(m), check_independent_set(m), check_empty_balls(m),
           check_voronoi_candidates(m), check_min_ranks(m),         check_delaunay(m),        check_well_spaced(m),
-          check_size_conformity(m),    check_active_per_ball(m)};
+          check_size_conformity(m),    check_active_per_ball(m),   check_rigid_boundary(m)};
 }
 
 }  // namespace kmr::kmesh

@@ -16,8 +16,8 @@
 //    vertex is the convex hull of its Voronoi vertices and itself, spec/kmesh.md);
 //  * size conformity (L4.2.8): max lfs(v)/NN_M(v) reported (lfs = distance to the second-nearest
 //    input point), a measured constant;
-//  * rigid boundary (L4.3.1, construction only): the triangulation's boundary is the 12 satellites
-//            of one nucleus at the highest Steiner rank (no certificate watches its convexity; below);
+//  * rigid boundary (L4.3.1): the triangulation's boundary is the 12 satellites of one nucleus at
+//            the highest Steiner rank (no certificate watches its convexity; below);
 //  * L4.3.3  at every rank ℓ, a closed ball of radius 2^(ℓ−3) centred at an active vertex holds at most
 //            kActivePerBall active vertices (the packing bound of the lemma's proof, derived in
 //            spec/kmesh.md); the largest count is reported.
@@ -53,10 +53,9 @@ CheckResult check_active_per_ball(const Mesh& m);    // L4.3.3, measured max cou
 // L4.3.1's certificates watch every triangle's orientation and every interior edge, not the
 // convexity of M's boundary. None is needed while the boundary is the 12 satellites of one nucleus
 // at the highest rank of M: they move rigidly with their nucleus (a fixed convex 12-gon). A
-// construction always has such a boundary (spec/kmesh.md), so check_all includes this check (hence
-// the construction and every snapshot of the rebuild KDS); an updated mesh need not (a deletion
-// that lowers the top rank can split it between nuclei: update_test.cpp), so check_all_updated
-// does not. A mesh without triangles passes.
+// construction always has such a boundary, and Fig. 4.5 keeps it by re-deciding the whole top rank
+// when it falls (Updater::recompute_highest; spec/kmesh.md). Checked, not assumed: in check_all and
+// check_all_updated. A mesh without triangles passes.
 CheckResult check_rigid_boundary(const Mesh& m);
 std::vector<CheckResult> check_all(const Mesh& m);
 // U1 of kmesh/update.hpp: the considered satellites are exactly the 12 per rank of the active

@@ -291,7 +291,12 @@ Rank Updater::recompute_highest() {
            it != sats_.end() && std::get<0>(it->first) == old; ++it)
         if (it->second.converted) affect_rank(std::get<1>(it->first), old + 1);
   } else if (hi < old) {
-    for (auto it = sats_.lower_bound(Key{hi + 1, std::numeric_limits<int>::min(), 0}); it != sats_.end(); ++it)
+    // The ranks above hi go, and rank hi, now the top, is re-decided whole (Remove, then Convert in
+    // key order, as the construction decides it): its old decisions were made as an inner rank, where
+    // the 12 satellites of a rank may belong to several nuclei, and the boundary of M must be the 12
+    // top satellites of one nucleus, a rigid 12-gon (no certificate watches its convexity;
+    // check_rigid_boundary, spec/kmesh.md).
+    for (auto it = sats_.lower_bound(Key{hi, std::numeric_limits<int>::min(), 0}); it != sats_.end(); ++it)
       affect(it->first);
   }
   return hi;

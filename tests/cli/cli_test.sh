@@ -98,9 +98,9 @@ printf '0.125 + 3 3 1 0\n0.25 - 9 7 0 0\n' >"$tmp/km13u.txt"
 "$kmr" kmesh "$tmp/km13.txt" --until 0.25 --lattice-bits 3 --updates "$tmp/km13u.txt" --check >/dev/null 2>"$tmp/err"
 if [ $? -eq 0 ] && [ ! -s "$tmp/err" ]; then passed=$((passed+1)); else
   failed=$((failed+1)); echo "FAIL kmesh-check-witness"; cat "$tmp/err"; fi
-# Inserting and deleting a far point lowers the top rank back and leaves the boundary split between
-# two nuclei (a valid mesh; spec/kmesh.md, "rigid boundary"): --check must pass (session 32 made it
-# exit 1 here for an hour, by requiring a single-nucleus boundary after updates).
+# Inserting and deleting a far point raises the top rank and lowers it back; the update must
+# re-decide the falling top rank whole, or the boundary is left split between two nuclei and its
+# convexity uncertified (spec/kmesh.md, "rigid boundary"). --check checks the boundary: it must pass.
 printf '0 0\n1 1\n0 2\n6 -3\n' >"$tmp/km16.txt"
 printf '0 + 28 30 0 0\n0 - 28 30 0 0\n' >"$tmp/km16u.txt"
 "$kmr" kmesh "$tmp/km16.txt" --updates "$tmp/km16u.txt" --check >/dev/null 2>"$tmp/err"
