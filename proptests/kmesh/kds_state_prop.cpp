@@ -3,7 +3,7 @@
 // way repaired by Fig. 4.5), insert a moving point, or delete one. After each batch and command:
 // every certificate holds at the repair time (L4.3.1), the brute-force checks of an updated mesh
 // hold (kmesh/invariants.hpp check_all_updated: spanner S1–S4, U1, L4.3.2, L4.2.6, L4.2.9, L4.2.10,
-// Delaunay, 9/2-well-spaced) and the mesh's input is the model. Starts: random motions, collinear,
+// Delaunay, 9/2-well-spaced, rigid boundary) and the mesh's input is the model. Starts: random motions, collinear,
 // cocircular, two clusters 2^30 apart, and the Fig. 4.6 motion (two rows ε = 1/4 apart, ×4, the
 // lower row moving by one spacing per unit of time).
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Model-vs-system property (rc::state) for the update of Fig. 4.5 (kmesh/update.hpp): the model is
 // the input set; commands insert a point or delete one. After each update the brute-force checks
 // (kmesh/invariants.hpp check_all_updated: spanner S1–S4, U1, L4.3.2, L4.2.6, L4.2.9, L4.2.10,
-// Delaunay, 9/2-well-spaced) hold and the mesh's input is the model. Starts: uniform, collinear,
+// Delaunay, 9/2-well-spaced, rigid boundary) hold and the mesh's input is the model. Starts: uniform, collinear,
 // cocircular, two clusters 2^30 apart, and the Fig. 4.6 rows (two lines ε = 1/4 apart, scaled).
 #include <gtest/gtest.h>
 #include <rapidcheck.h>

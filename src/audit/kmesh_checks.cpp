@@ -272,7 +272,7 @@ double judge_growth_per_lg(Verdict& v, const Options& o, const std::string& seam
 // n − 1 uniform points in [0, 2^k]^2 plus one at distance 1 of the first; insert a random point,
 // then delete it. After each update the brute-force invariants hold (check_all_updated: spanner,
 // U1, L4.3.2 as the maximal-independent-set check, L4.2.6, L4.2.9, L4.2.10, Delaunay,
-// 9/2-well-spaced); the operations of stages 1–2 ÷ log2 Δ must not grow with Δ (claim O(log Δ)).
+// 9/2-well-spaced, rigid boundary); the operations of stages 1–2 ÷ log2 Δ must not grow with Δ (claim O(log Δ)).
 Verdict t437(const Options& o) {
   Verdict v;
   const std::size_t n = o.quick ? 4 : 5;
@@ -324,7 +324,7 @@ Verdict t437(const Options& o) {
 // batches are repaired by Fig. 4.5. For growing spread Δ: (0, 0) at rest, (1, 0) moving by (0, 1),
 // and n − 2 uniform points at rest in [0, 2^k]^2 (the events are the close pair's); lattice 2^−3,
 // run until the first batch that relocates a nucleus. After every batch: check_all_updated (spanner,
-// U1, L4.3.2, L4.3.3's packing bound, the output's invariants) and every kept certificate holds at the
+// U1, L4.3.2, L4.3.3's packing bound, the output's invariants, the rigid boundary) and every kept certificate holds at the
 // repair time (L4.3.1). Judged: Fig. 4.5's operations per event of that batch ÷ log2 Δ, at the
 // largest Δ at most twice the smallest (claim O(log Δ) per event).
 Verdict t437_kinetic(const Options& o) {

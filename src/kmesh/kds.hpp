@@ -18,7 +18,8 @@
 //    there, and so is a triangle flat at (k+1)δ; a cocircular in-circle one is not); a batch of Delaunay
 //    certificates only (no spanner or ball certificate) changes no vertex of M;
 //  * mesh() passes the brute-force checks of an updated mesh (kmesh/invariants.hpp,
-//    check_all_updated: spanner, U1, L4.3.2, L4.2.6, L4.2.9, L4.2.10, Delaunay, 9/2-well-spaced);
+//    check_all_updated: spanner, U1, L4.3.2, L4.2.6, L4.2.9, L4.2.10, Delaunay, 9/2-well-spaced,
+//    the rigid boundary);
 //  * incremental certificates: a certificate is kept under a canonical name (kind, rank, and its
 //    vertices: an input vertex by its trajectory, a Steiner vertex by its nucleus's trajectory, rank
 //    and ray — never an id of mesh() nor of the Updater), with its polynomial of absolute time and

@@ -16,6 +16,17 @@
 //     or Steiner converted at a rank ≤ ℓ) lies in its closed ball B(s, 2^(ℓ−2)): a maximal
 //     independent subset of the proximity graph of rank ℓ;
 //  U3 the witness of a satellite not converted is a vertex of rank ≤ ℓ in its ball.
+//  U4 the top rank Λ+4 is owned by one nucleus: its 12 satellites are converted, no other nucleus's
+//     is, so the boundary of M is a rigid 12-gon (no certificate watches its convexity;
+//     check_rigid_boundary). Why it holds: inputs lie within 2^(Λ+1) of each other; a top satellite
+//     is ≥ ≈ 6.5·2^Λ from every vertex of lower rank and 8.28·2^Λ from its nucleus's other top
+//     satellites, against the ball radius 4·2^Λ, so whichever nucleus is decided first at the top
+//     rank converts all 12, and every other top satellite lies within 2^(Λ+1) of the owner's on its
+//     ray (a same-rank witness, U2). A rising top rank is new, hence decided whole; a falling one is
+//     re-decided whole (recompute_highest); with the top rank unchanged, the owner's top satellites
+//     go only all together (its deletion, relocation or activity change) and the others' only
+//     witness is the owner's, so its removal re-decides the whole rank. The owner is the first in
+//     key order, which can differ from a fresh construction's (keys are input keys).
 // So a decision can change only if (a) the nucleus's activity at ℓ changes, (b) a vertex enters a
 // converted satellite's ball (an insertion, or a conversion at a lower rank), or (c) the witness of
 // one not converted goes: these put the satellite in F_ℓ, and ranks are repaired in increasing order,

@@ -113,10 +113,13 @@ TEST(Update, DeletingTheFarPointThatRaisedTheTopRankLeavesARigidBoundary) {
   Mesh fresh = construct(in);
   ASSERT_TRUE(check_rigid_boundary(fresh).ok());
   Updater U(in);
+  const Rank top = U.mesh().highest;
   U.insert(ip(28, 30));
+  ASSERT_GT(U.mesh().highest, top);  // the path under test: the top rank rises, then falls back
   EXPECT_TRUE(check_rigid_boundary(U.mesh()).ok()) << check_rigid_boundary(U.mesh()).violations[0];
   U.erase(ip(28, 30));
   Mesh m = U.mesh();
+  ASSERT_EQ(m.highest, top);
   EXPECT_EQ(failures(check_all_updated(m)), "");
   auto r = check_rigid_boundary(m);
   EXPECT_TRUE(r.ok()) << r.violations[0];
@@ -131,6 +134,29 @@ TEST(Update, DeletingTheFarPointThatRaisedTheTopRankLeavesARigidBoundary) {
     return out;
   };
   EXPECT_EQ(boundary(m), boundary(fresh));
+}
+
+// U4 with the top rank unchanged: deleting the owner of the top rank, (0, 0), keeps Λ (the farthest
+// pair from the new smallest point (0, 2) is still within the same power of two), so the other top
+// satellites, all witnessed by the owner's, are re-decided together and one nucleus owns all 12.
+TEST(Update, DeletingTheOwnerOfTheTopRankLeavesARigidBoundary) {
+  RecordProperty("claim", "L4.3.1");
+  Updater U({ip(0, 0), ip(1, 1), ip(0, 2), ip(6, -3)});
+  const Mesh before = U.mesh();
+  ASSERT_TRUE(check_rigid_boundary(before).ok());
+  std::set<int> owners_before;
+  for (auto& in : before.info)
+    if (in.steiner && in.rank == before.highest) owners_before.insert(in.nucleus);
+  ASSERT_EQ(owners_before, std::set<int>{0});  // (0, 0), input 0 in sorted order
+  U.erase(ip(0, 0));
+  Mesh m = U.mesh();
+  ASSERT_EQ(m.highest, before.highest);  // the path under test: same top rank
+  EXPECT_EQ(failures(check_all_updated(m)), "");
+  std::set<int> owners;
+  for (auto& in : m.info)
+    if (in.steiner && in.rank == m.highest) owners.insert(in.nucleus);
+  EXPECT_EQ(owners.size(), 1u);
+  EXPECT_TRUE(check_rigid_boundary(m).ok()) << check_rigid_boundary(m).violations[0];
 }
 
 void family_case(int family, int n0, int steps) {
