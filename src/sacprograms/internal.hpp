@@ -17,6 +17,5 @@ long long static_sum(const SCell* l);
 SCell* static_quicksort(const SCell* l, SArena& a);
 SCell* static_mergesort(const SCell* l, SArena& a);
 std::vector<long long> static_quickhull(const SCell* l);
-std::vector<long long> monotone_chain_hull(std::vector<long long> pts);
 
 }  // namespace kmr::sacprograms

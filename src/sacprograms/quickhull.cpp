@@ -190,22 +190,4 @@ std::vector<long long> static_quickhull(const SCell* l) {
   return out;
 }
 
-// Andrew's monotone chain: an independent reference for the tests.
-std::vector<long long> monotone_chain_hull(std::vector<long long> pts) {
-  std::sort(pts.begin(), pts.end(), lex_less);
-  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
-  if (pts.size() <= 1) return pts;
-  std::vector<long long> h;
-  for (int pass = 0; pass < 2; ++pass) {
-    std::size_t start = h.size();
-    for (long long p : pts) {
-      while (h.size() >= start + 2 && orient(h[h.size() - 2], h.back(), p) <= 0) h.pop_back();
-      h.push_back(p);
-    }
-    h.pop_back();
-    std::reverse(pts.begin(), pts.end());
-  }
-  return h;
-}
-
 }  // namespace kmr::sacprograms

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <numeric>
 
 #include "sacprograms/internal.hpp"
@@ -19,6 +20,32 @@ auto timed(double* seconds, F&& f) {
 }
 std::function<std::vector<long long>()> list_reader(Runtime& rt, Root* out) {
   return [&rt, out] { return to_vector(rt, out); };
+}
+
+// Andrew's monotone chain, the reference for quickhull's tests. Its arithmetic is its own (the
+// encoding read again, an __int128 cross product): it shares no predicate with the self-adjusting
+// program (geometry::orientation_value) nor with its static twin (twin::cross).
+std::vector<long long> monotone_chain_hull(std::vector<long long> pts) {
+  auto x = [](long long p) { return static_cast<__int128>(p >> 32); };
+  auto y = [](long long p) { return static_cast<__int128>(static_cast<std::int32_t>(p & 0xffffffffLL)); };
+  auto lex = [&](long long p, long long q) { return x(p) < x(q) || (x(p) == x(q) && y(p) < y(q)); };
+  auto left_turn = [&](long long a, long long b, long long c) {
+    return (x(b) - x(a)) * (y(c) - y(a)) > (y(b) - y(a)) * (x(c) - x(a));
+  };
+  std::sort(pts.begin(), pts.end(), lex);
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  if (pts.size() <= 1) return pts;
+  std::vector<long long> h;
+  for (int pass = 0; pass < 2; ++pass) {  // lower chain left to right, then upper right to left
+    std::size_t start = h.size();
+    for (long long p : pts) {
+      while (h.size() >= start + 2 && !left_turn(h[h.size() - 2], h.back(), p)) h.pop_back();
+      h.push_back(p);
+    }
+    h.pop_back();
+    std::reverse(pts.begin(), pts.end());
+  }
+  return h;
 }
 }  // namespace
 
