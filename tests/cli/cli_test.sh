@@ -82,6 +82,28 @@ printf '0 + 4 4 0 0\n0 - 5 1 0 0\n' >"$tmp/km10u.txt"
 "$kmr" kmesh "$tmp/km10.txt" --updates "$tmp/km10u.txt" --check --stats "$tmp/km10.json" >/dev/null 2>"$tmp/err"
 if [ $? -eq 0 ] && [ "$(grep -o '"repair": "fig4.5"' "$tmp/km10.json" | wc -l)" -eq 2 ]; then passed=$((passed+1)); else
   failed=$((failed+1)); echo "FAIL kmesh-updates-at-rest"; cat "$tmp/err"; fi
+# --stats counts every --check run by claim: L4.2.4 (it reads the construction's order) once, after the
+# construction, on each path (at rest with updates, static, moving); the checks of an updated mesh
+# after every update and batch (U1: once per check point). The kinetic KDS counts the certificates its
+# construction built and those each batch built and dropped; the Fig. 4.5 updater at rest has none.
+"$kmr" kmesh "$tmp/km2.txt" --check --stats "$tmp/km2s.json" >/dev/null 2>"$tmp/err"
+"$kmr" kmesh "$tmp/km6.txt" --until 0.25 --lattice-bits 2 --check --stats "$tmp/km6s.json" >/dev/null 2>>"$tmp/err"
+if python3 - "$tmp/km10.json" "$tmp/km2s.json" "$tmp/km6s.json" <<'PY'; then ok; else bad "kmesh-check-tally"; cat "$tmp/err"; fi
+import json, sys
+at_rest, static, moving = (json.load(open(f)) for f in sys.argv[1:])
+def runs(s, claim):
+    c = [c for c in s["checks"] if c["claim"] == claim]
+    assert len(c) == 1 and c[0]["violations"] == 0 and c[0]["ok"], (claim, c)
+    return c[0]["runs"]
+for s, points in ((at_rest, 3), (static, 1), (moving, 1 + len(moving["batches"]))):
+    assert runs(s, "L4.2.4") == 1, s["checks"]
+    assert runs(s, "U1") >= points, (runs(s, "U1"), points)
+    assert runs(s, "L4.2.6") == runs(s, "U1")
+# At rest, the certificates at the end are those the construction built: M's (stdout's count) and S_N's.
+assert static["certificates_initial"] >= sum(static["certificates"].values()) > 0, static
+assert moving["batches"] and all(b["certificates_created"] >= 0 for b in moving["batches"]), moving["batches"]
+assert "certificates_initial" not in at_rest and not any("certificates_created" in b for b in at_rest["batches"])
+PY
 # Moving points: the kinetic KDS repairs every batch by Fig. 4.5 (checked by --check, L4.3.1 included);
 # --rebuild runs the reference KDS instead.
 "$kmr" kmesh "$tmp/km6.txt" --until 0.25 --lattice-bits 2 --check --stats "$tmp/km11.json" >/dev/null 2>"$tmp/err"
