@@ -1,10 +1,11 @@
-// The Chapter 4 construction judged by CGAL (kmesh_oracle.hpp), and the oracle judged on known-bad
-// triangulations and a set that is not well-spaced.
+// The Chapter 4 construction, and the kinetic KDS's mesh after every batch and update, judged by CGAL
+// (kmesh_oracle.hpp); the oracle judged on known-bad triangulations and a set that is not well-spaced.
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "kmesh/construction.hpp"
+#include "kmesh/kds.hpp"
 #include "kmesh_oracle.hpp"
 
 using namespace kmr::kmesh;
@@ -71,4 +72,52 @@ TEST(KmeshOracle, L4_2_3_ConstructionIsDelaunayWellSpacedSizeConforming) {
   RecordProperty("max_well_spaced", std::to_string(ws));
   RecordProperty("max_lfs_over_nn", std::to_string(sz));
   std::printf("measured: max |vc|/NN(v) = %.4f (claim <= 4.5), max lfs/NN_M = %.3f (L4.2.8: bounded)\n", ws, sz);
+}
+
+// §4.3 (L4.3.1 with L4.2.3, L4.2.7, L4.2.8): the kinetic KDS's mesh after the construction, every
+// batch and every update, judged by CGAL at the repair time (a lattice time: the mesh is certified
+// at lattice times; judge_mesh accepts either triangulation of a cocircular quadruple), over nine
+// intervals of the lattices 2^-3 and the CLI's default 2^-10. Inputs: a close pass, three points collinear at every time, four
+// points cocircular at every time (on circles about the origin), a cluster 2^12 away; an insertion
+// and a deletion in the middle of each run.
+TEST(KmeshOracle, L4_3_1_KineticAndUpdatedMeshesAreDelaunayWellSpacedSizeConforming) {
+  RecordProperty("claim", "L4.3.1 L4.2.3 L4.2.7 L4.2.8");
+  auto mv = [](long long x, long long y, long long vx, long long vy) {
+    return InputPoint{Integer(x), Integer(y), Integer(vx), Integer(vy)};
+  };
+  const long long far = 1LL << 12;
+  std::vector<std::vector<InputPoint>> cases{
+      {mv(0, 0, 4, 0), mv(10, 1, -4, 0), mv(4, 9, 0, 0)},                    // a close pass at t = 5/4
+      {mv(0, 0, 0, 1), mv(2, 0, 0, 0), mv(4, 0, 0, -1)},                     // collinear at every t
+      {mv(5, 0, 0, 1), mv(0, 5, -1, 0), mv(-5, 0, 0, -1), mv(0, -5, 1, 0)},  // cocircular at every t
+      {mv(0, 0, 0, 0), mv(1, 1, 0, 0), mv(far, 0, -2, 1), mv(far + 3, 2, 0, 0)}};
+  const InputPoint added = mv(7, -6, 0, 1);
+  double ws = 0, sz = 0;
+  std::size_t judged = 0;
+  for (int bits : {3, 10})
+    for (std::size_t c = 0; c < cases.size(); ++c) {
+      KineticMesh kds(cases[c], bits);
+      auto judge_now = [&](const std::string& when) {
+        auto r = judge(kds.mesh());
+        ++judged;
+        EXPECT_TRUE(r.ok()) << "case " << c << ", lattice 2^-" << bits << ", " << when << " at "
+                            << kds.now().to_decimal() << ": " << (r.ok() ? "" : r.violations[0]);
+        ws = std::max(ws, r.max_well_spaced);
+        sz = std::max(sz, r.max_size_ratio);
+      };
+      judge_now("construction");
+      auto after = [&](const Batch&) { judge_now("batch"); };
+      const Dyadic step(1, -bits);  // three lattice intervals, an insertion, three, a deletion, three
+      kds.run_until(step * Dyadic(3), after);
+      kds.insert(added);
+      judge_now("insertion");
+      kds.run_until(step * Dyadic(6), after);
+      kds.erase(added);
+      judge_now("deletion");
+      kds.run_until(step * Dyadic(9), after);
+      EXPECT_GT(kds.batches().size(), 3u) << "case " << c << ": the run must have kinetic batches";
+    }
+  RecordProperty("meshes_judged", std::to_string(judged));
+  std::printf("kinetic: %zu meshes judged; max |vc|/NN(v) = %.4f (claim <= 4.5), max lfs/NN_M = %.3f\n", judged, ws,
+              sz);
 }
