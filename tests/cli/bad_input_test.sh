@@ -200,6 +200,23 @@ expect_error kmesh-update-neg "kmu_neg:1: time -1 is negative" -- kmesh "$f/km" 
 expect_error kmesh-update-nul "kmu_nul:1: '0\\x00' is not a dyadic decimal time" -- kmesh "$f/km" --updates "$f/kmu_nul"
 # (0,0) moving by (1,0) meets the inserted (4,0) at t = 4 (within --until 8); both places named.
 expect_error kmesh-update-collides "kmu_collide:1 and $f/km_moving:1: the two points collide at time 4" -- kmesh "$f/km_moving" --updates "$f/kmu_collide" --until 8
+# Nothing half-applied: a refused run writes no stdout and leaves no --stats or --svg file, also when
+# the bad line comes after valid ones (a point file's line 2, an update file's line 2, a deletion of
+# an absent trajectory, a collision).
+printf '0 0\n1 2.5\n' >"$f/km4_bad2"
+printf '0 + 9 9 0 0\n0.5 - 7 7 0 0\n' >"$f/kmu_absent"
+printf '0 + 9 9 0 0\n0.5 + 9 9\n' >"$f/kmu_arity2"
+nothing_written() {
+  local name=$1; shift
+  rm -f "$tmp/nw.json" "$tmp/nw.svg"
+  timeout 60 "$kmr" kmesh "$@" --check --stats "$tmp/nw.json" --svg "$tmp/nw.svg" >"$tmp/nw.out" 2>"$tmp/err"; local rc=$?
+  if [ $rc -eq 2 ] && [ ! -s "$tmp/nw.out" ] && [ ! -e "$tmp/nw.json" ] && [ ! -e "$tmp/nw.svg" ] && [ -s "$tmp/err" ]; then
+    passed=$((passed+1)); else failed=$((failed+1)); echo "FAIL $name: rc=$rc, stdout $(wc -c <"$tmp/nw.out") bytes, files: $(ls "$tmp"/nw.json "$tmp"/nw.svg 2>/dev/null)"; fi
+}
+nothing_written kmesh-nothing-written-points "$f/km4_bad2"
+nothing_written kmesh-nothing-written-updates "$f/km" --updates "$f/kmu_arity2" --until 1
+nothing_written kmesh-nothing-written-absent "$f/km" --updates "$f/kmu_absent" --until 1
+nothing_written kmesh-nothing-written-collision "$f/km_moving" --updates "$f/kmu_collide" --until 8
 # Deleting a trajectory and inserting it again later is valid: the two lives do not overlap. The
 # repaired mesh has the vertices and triangles of a from-scratch run (certificate counts may differ).
 timeout 60 "$kmr" kmesh "$f/km" --updates "$f/kmu_again" --until 1 --lattice-bits 1 >"$tmp/again" 2>"$tmp/err"; ra=$?
