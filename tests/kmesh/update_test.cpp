@@ -7,6 +7,7 @@
 
 #include <random>
 #include <set>
+#include <tuple>
 
 #include "exact/error.hpp"
 #include "kmesh/invariants.hpp"
@@ -90,15 +91,29 @@ TEST(Update, ConstructionSatisfiesTheUpdateInvariants) {
 }
 
 TEST(Update, BadUpdatesAreRefusedAndChangeNothing) {
-  Updater U({ip(0, 0), ip(5, 1)});
-  std::size_t before = U.mesh().size();
+  // The mesh as a user sees it: vertex positions and kinds, triangles (ids into the vertices).
+  auto seen = [](const Mesh& m) {
+    std::vector<std::tuple<Dyadic, Dyadic, bool>> v;
+    for (std::size_t i = 0; i < m.size(); ++i)
+      v.emplace_back(m.spanner.position(int(i))[0], m.spanner.position(int(i))[1], m.info[i].steiner);
+    return std::pair{v, m.triangles};
+  };
+  // U is refused three updates; V, the same updater that never saw them. A refused update must leave
+  // no trace: the mesh right after it, and after the valid updates that follow, equals V's.
+  Updater U({ip(0, 0), ip(5, 1)}), V({ip(0, 0), ip(5, 1)});
   EXPECT_THROW(U.insert(ip(5, 1)), kmr::InputError);
   EXPECT_THROW(U.erase(ip(7, 7)), kmr::InputError);
-  U.erase(ip(0, 0));
-  EXPECT_THROW(U.erase(ip(5, 1)), kmr::InputError);
-  U.insert(ip(0, 0));
+  EXPECT_TRUE(seen(U.mesh()) == seen(V.mesh())) << "a refused update changed the mesh";
+  for (Updater* w : {&U, &V}) w->insert(ip(2, 7));
+  EXPECT_TRUE(seen(U.mesh()) == seen(V.mesh())) << "a refused update changed the next insertion";
+  for (Updater* w : {&U, &V}) w->erase(ip(0, 0)), w->erase(ip(2, 7));
+  EXPECT_THROW(U.erase(ip(5, 1)), kmr::InputError);  // the last point
+  EXPECT_TRUE(seen(U.mesh()) == seen(V.mesh())) << "the refused deletion of the last point changed the mesh";
+  EXPECT_EQ(seen(U.mesh()).first.size(), 1u);  // one point is its own mesh
+  for (Updater* w : {&U, &V}) w->insert(ip(0, 0));
+  EXPECT_TRUE(seen(U.mesh()) == seen(V.mesh())) << "a refused update changed the next insertion";
   EXPECT_EQ(failures(check_all_updated(U.mesh())), "");
-  EXPECT_GT(before, 2u);
+  EXPECT_GT(seen(U.mesh()).first.size(), 2u);
 }
 
 // The boundary of a construction is the 12 top-rank satellites of one nucleus (check_rigid_boundary):
