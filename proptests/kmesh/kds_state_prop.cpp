@@ -3,9 +3,12 @@
 // way repaired by Fig. 4.5), insert a moving point, or delete one. After each batch and command:
 // every certificate holds at the repair time (L4.3.1), the brute-force checks of an updated mesh
 // hold (kmesh/invariants.hpp check_all_updated: spanner S1–S4, U1, L4.3.2, L4.2.6, L4.2.9, L4.2.10,
-// Delaunay, 9/2-well-spaced, rigid boundary) and the mesh's input is the model. Starts: random motions, collinear,
-// cocircular, two clusters 2^30 apart, and the Fig. 4.6 motion (two rows ε = 1/4 apart, ×4, the
-// lower row moving by one spacing per unit of time).
+// Delaunay, 9/2-well-spaced, rigid boundary) and the mesh's input is the model. Starts, each one its
+// own case at a lattice drawn from 2^-3 and the CLI's default 2^-10: random motions, points collinear
+// at every time (one line moving), points cocircular at every time (a circle about the origin, the
+// points moving tangentially or at rest), two clusters 2^30 apart, the Fig. 4.6 motion (two rows
+// ε = 1/4 apart, ×4, the lower row moving by one spacing per unit of time), a grid moving as one,
+// and near-duplicate pairs (1 apart, a 64-wide field).
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 #include <rapidcheck/gtest.h>
@@ -25,8 +28,6 @@ using kmr::exact::Integer;
 
 namespace {
 
-constexpr int kBits = 3;  // lattice step 1/8
-
 template <class T>
 rc::Gen<T> uniform(T lo, T hi) {
   return rc::gen::resize(100, rc::gen::inRange<T>(lo, hi));
@@ -34,6 +35,7 @@ rc::Gen<T> uniform(T lo, T hi) {
 
 struct Model {
   std::vector<InputPoint> points;
+  int bits = 3;  // the lattice 2^-bits
   Dyadic now{0};
 };
 struct Sut {
@@ -61,7 +63,7 @@ void verify(const KineticMesh& k, const Model& m) {
 struct Advance : rc::state::Command<Model, Sut> {
   int steps = *uniform(1, 3);
   explicit Advance(const Model&) {}
-  Dyadic to(const Model& m) const { return m.now + Dyadic(steps, -kBits); }
+  Dyadic to(const Model& m) const { return m.now + Dyadic(steps, -m.bits); }
   void checkPreconditions(const Model& m) const override {
     RC_PRE(!first_collision(m.points, m.now, to(m)).has_value());
   }
@@ -76,7 +78,7 @@ struct Advance : rc::state::Command<Model, Sut> {
     });
     verify(*s.k, next);
   }
-  void show(std::ostream& os) const override { os << "advance " << steps << "/8"; }
+  void show(std::ostream& os) const override { os << "advance " << steps << " lattice steps"; }
 };
 
 struct Insert : rc::state::Command<Model, Sut> {
@@ -123,26 +125,34 @@ struct Delete : rc::state::Command<Model, Sut> {
   void show(std::ostream& os) const override { os << "delete (" << p.x.str() << ", " << p.y.str() << ")"; }
 };
 
-std::vector<InputPoint> initial() {
-  int shape = *rc::gen::element(0, 1, 2, 3, 4);
-  static const char* names[] = {"random motions", "collinear", "cocircular", "clusters 2^30", "Fig. 4.6 motion"};
-  RC_CLASSIFY(true, names[shape]);
+std::vector<InputPoint> initial(int shape) {
   std::vector<InputPoint> v;
   auto add = [&](InputPoint p) {
     for (auto& q : v)
       if (q == p || first_collision({p, q}, Dyadic(0), Dyadic(1))) return;
     v.push_back(p);
   };
-  int n = *uniform(2, 5);
   auto vel = [] { return *uniform<long long>(-2, 3); };
-  static const long long circle[][2] = {{25, 0}, {24, 7}, {20, 15}, {15, 20}, {7, 24}, {0, 25}, {-7, 24}, {-15, 20}};
+  // Degenerate starts have at least four points, so that a degenerate quadruple exists.
+  int n = *uniform(shape == 0 || shape == 3 || shape == 4 ? 2 : 4, 6);
+  static const long long circle[][2] = {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3}, {-5, 0}, {-4, -3}};
+  const long long line_vx = vel(), line_vy = vel(), turn = *uniform<long long>(0, 2), grid_vx = vel(), grid_vy = vel();
   for (int i = 0; i < n; ++i) {
     switch (shape) {
       case 0: add(mv(*uniform<long long>(0, 65), *uniform<long long>(0, 65), vel(), vel())); break;
-      case 1: add(mv(*uniform<long long>(0, 65), 0, vel(), vel())); break;
-      case 2: add(mv(circle[i][0], circle[i][1], vel(), vel())); break;
+      // On the line y = line_vy·t: every point keeps y = 0 + line_vy·t, moving along it at its own speed.
+      case 1: add(mv(*uniform<long long>(0, 65), 0, line_vx + vel(), line_vy)); break;
+      // p + t·turn·p⊥ lies on the circle of radius 5·sqrt(1 + turn²t²) about the origin.
+      case 2: add(mv(circle[i][0], circle[i][1], -turn * circle[i][1], turn * circle[i][0])); break;
       case 3: add(mv(*uniform<long long>(0, 9) + (i % 2 ? (1LL << 30) : 0), *uniform<long long>(0, 9), vel(), vel())); break;
-      default: add(i % 2 ? mv(4 * (i / 2), 1, 0, 0) : mv(4 * (i / 2), 0, 4, 0)); break;
+      case 4: add(i % 2 ? mv(4 * (i / 2), 1, 0, 0) : mv(4 * (i / 2), 0, 4, 0)); break;
+      case 5: add(mv(4 * (i % 3), 4 * (i / 3), grid_vx, grid_vy)); break;
+      default: add(mv(*uniform<long long>(0, 65) + (i % 2), *uniform<long long>(0, 65), vel(), vel())); break;
+    }
+    if (shape == 6 && i % 2 == 0) {  // its near-duplicate: 1 apart, the same motion
+      InputPoint q = v.back();
+      q.x += 1;
+      add(q), ++i;
     }
   }
   return v;
@@ -152,10 +162,16 @@ std::vector<InputPoint> initial() {
 
 TEST(KmeshKdsStateProp, L4_3_1_KineticBatchesInsertionsAndDeletionsKeepTheInvariants) {
   RecordProperty("claim", "L4.3.1");
-  kmr::proptest::check_cases(3, 3, [] {
-    Model m{initial()};
-    Sut s{std::make_unique<KineticMesh>(m.points, kBits)};
-    verify(*s.k, m);
-    rc::state::check(m, s, rc::state::gen::execOneOfWithArgs<Advance, Advance, Insert, Delete>());
-  });
+  static const char* names[] = {"random motions", "collinear at every time", "cocircular at every time",
+                                "clusters 2^30", "Fig. 4.6 motion", "moving grid", "near-duplicates"};
+  for (int shape = 0; shape < 7; ++shape) {
+    SCOPED_TRACE(names[shape]);
+    kmr::proptest::check_cases(1, 3, [shape] {
+      Model m{initial(shape), *rc::gen::element(3, 10)};
+      RC_CLASSIFY(true, "lattice 2^-" + std::to_string(m.bits));
+      Sut s{std::make_unique<KineticMesh>(m.points, m.bits)};
+      verify(*s.k, m);
+      rc::state::check(m, s, rc::state::gen::execOneOfWithArgs<Advance, Advance, Insert, Delete>());
+    });
+  }
 }
