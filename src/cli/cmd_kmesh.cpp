@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -100,11 +101,15 @@ int kmesh_command(const Argv& argv) {
       if (u.t > until) throw InputError(u.where + ": update at time " + u.t.to_decimal() + " is after --until " + until.to_decimal());
   }
   // Validate everything before running: membership of every update, and no two trajectories in the
-  // same place at a common time in [0, T] (the spread would be infinite).
+  // same place at a common time in [0, T] (the spread would be infinite). A life runs from its
+  // insertion to its deletion, ordered by (time, place in the run: updates at one time apply in file
+  // order), so a trajectory deleted at T and one inserted after it at T never coexist.
+  constexpr std::size_t kNever = std::numeric_limits<std::size_t>::max();
   struct Life {
     InputPoint p;
     Dyadic from, to;
     std::string where;
+    std::size_t from_seq = 0, to_seq = kNever;  // 0: the point file; k + 1: the k-th update in order
   };
   std::vector<Life> lives;
   std::vector<std::size_t> present;
@@ -113,28 +118,32 @@ int kmesh_command(const Argv& argv) {
     lives.push_back({{p.x, p.y, p.vx, p.vy}, Dyadic(0), until, path + ":" + std::to_string(p.line)});
   }
   auto same = [](const InputPoint& a, const InputPoint& b) { return a.x == b.x && a.y == b.y && a.vx == b.vx && a.vy == b.vy; };
-  for (auto& u : updates) {
+  for (std::size_t k = 0; k < updates.size(); ++k) {
+    const Update& u = updates[k];
     auto it = std::find_if(present.begin(), present.end(), [&](std::size_t i) { return same(lives[i].p, u.p); });
     if (u.insert) {
       if (it != present.end()) throw InputError(u.where + ": inserts a trajectory that is already present");
       present.push_back(lives.size());
-      lives.push_back({u.p, u.t, until, u.where});
+      lives.push_back({u.p, u.t, until, u.where, k + 1, kNever});
     } else {
       if (it == present.end()) throw InputError(u.where + ": deletes a trajectory that is not present");
       if (present.size() == 1) throw InputError(u.where + ": deletes the last trajectory");
       lives[*it].to = u.t;
+      lives[*it].to_seq = k + 1;
       present.erase(it);
     }
   }
   for (std::size_t i = 0; i < lives.size(); ++i)
     for (std::size_t j = i + 1; j < lives.size(); ++j) {
+      auto start = [](const Life& l) { return std::pair{l.from, l.from_seq}; };
+      auto end = [](const Life& l) { return std::pair{l.to, l.to_seq}; };
+      if (!(std::max(start(lives[i]), start(lives[j])) < std::min(end(lives[i]), end(lives[j])))) continue;
       Dyadic from = std::max(lives[i].from, lives[j].from), to = std::min(lives[i].to, lives[j].to);
-      if (from > to) continue;
       if (same(lives[i].p, lives[j].p))
         throw InputError(lives[j].where + " and " + lives[i].where + ": identical trajectories");
       if (auto c = first_collision({lives[i].p, lives[j].p}, from, to))
         throw InputError(lives[j].where + " and " + lives[i].where + ": the two points collide at time " +
-                         std::get<0>(*c).to_decimal() + " (the spread would be infinite)");
+                         std::get<0>(*c).str() + " (the spread would be infinite)");
     }
 
   OutputFile picture;  // opened before the run (a bad path fails fast), removed if the run fails

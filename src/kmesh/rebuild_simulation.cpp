@@ -19,10 +19,10 @@ std::set<std::pair<Dyadic, Dyadic>> steiner_positions(const Mesh& m, const Dyadi
 
 }  // namespace
 
-std::optional<std::tuple<Dyadic, std::size_t, std::size_t>> first_collision(const std::vector<InputPoint>& t,
-                                                                          const Dyadic& from, const Dyadic& to) {
-  std::optional<std::tuple<Dyadic, std::size_t, std::size_t>> best;
-  using Q = boost::multiprecision::mpq_rational;
+std::optional<std::tuple<CollisionTime, std::size_t, std::size_t>> first_collision(const std::vector<InputPoint>& t,
+                                                                                  const Dyadic& from, const Dyadic& to) {
+  std::optional<std::tuple<CollisionTime, std::size_t, std::size_t>> best;
+  using Q = CollisionTime;
   for (std::size_t i = 0; i < t.size(); ++i)
     for (std::size_t j = i + 1; j < t.size(); ++j) {
       exact::Integer dx = t[j].x - t[i].x, dy = t[j].y - t[i].y, dvx = t[j].vx - t[i].vx, dvy = t[j].vy - t[i].vy;
@@ -45,9 +45,7 @@ std::optional<std::tuple<Dyadic, std::size_t, std::size_t>> first_collision(cons
                                  : Q(x.mantissa(), exact::Integer(1) << static_cast<unsigned>(-x.exponent()));
       };
       if (*s < as_q(from) || *s > as_q(to)) continue;
-      // Report the collision at the lattice-free exact time rounded down to a dyadic for the message.
-      Dyadic when = Dyadic::from_double(s->convert_to<double>());
-      if (!best || when < std::get<0>(*best)) best = {{when, i, j}};
+      if (!best || *s < std::get<0>(*best)) best = {{*s, i, j}};
     }
   return best;
 }

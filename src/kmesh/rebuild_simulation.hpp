@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include <boost/multiprecision/gmp.hpp>
+
 #include "kmesh/certificates.hpp"
 
 namespace kmr::kmesh {
@@ -60,8 +62,10 @@ class RebuildSimulation {
   std::size_t events_ = 0;
 };
 
-// The first time in [from, to] at which two of the trajectories coincide, with their indices.
-std::optional<std::tuple<Dyadic, std::size_t, std::size_t>> first_collision(const std::vector<InputPoint>& t,
-                                                                          const Dyadic& from, const Dyadic& to);
+// The first time in [from, to] at which two of the trajectories coincide, exactly (a rational: str()
+// prints "1/3"), with their indices.
+using CollisionTime = boost::multiprecision::mpq_rational;
+std::optional<std::tuple<CollisionTime, std::size_t, std::size_t>> first_collision(const std::vector<InputPoint>& t,
+                                                                                  const Dyadic& from, const Dyadic& to);
 
 }  // namespace kmr::kmesh

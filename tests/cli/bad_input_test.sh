@@ -200,6 +200,11 @@ expect_error kmesh-update-neg "kmu_neg:1: time -1 is negative" -- kmesh "$f/km" 
 expect_error kmesh-update-nul "kmu_nul:1: '0\\x00' is not a dyadic decimal time" -- kmesh "$f/km" --updates "$f/kmu_nul"
 # (0,0) moving by (1,0) meets the inserted (4,0) at t = 4 (within --until 8); both places named.
 expect_error kmesh-update-collides "kmu_collide:1 and $f/km_moving:1: the two points collide at time 4" -- kmesh "$f/km_moving" --updates "$f/kmu_collide" --until 8
+# A collision at a time that is not dyadic is named exactly; one beyond the doubles (10^400) too.
+printf '0 0 3 0\n1 0\n' >"$f/km_third"
+expect_error kmesh-collides-third "km_third:2 and $f/km_third:1: the two points collide at time 1/3" -- kmesh "$f/km_third" --until 1
+python3 -c "print('0 0 1 0'); print(10**400, 0)" >"$f/km_far_collision"
+expect_error kmesh-collides-huge "km_far_collision:2 and $f/km_far_collision:1: the two points collide at time 1$(printf '0%.0s' $(seq 400)) (" -- kmesh "$f/km_far_collision" --until "1$(printf '0%.0s' $(seq 401))" --lattice-bits 0
 # Nothing half-applied: a refused run writes no stdout and leaves no --stats or --svg file, also when
 # the bad line comes after valid ones (a point file's line 2, an update file's line 2, a deletion of
 # an absent trajectory, a collision).
@@ -223,6 +228,21 @@ timeout 60 "$kmr" kmesh "$f/km" --updates "$f/kmu_again" --until 1 --lattice-bit
 timeout 60 "$kmr" kmesh "$f/km" --until 1 --lattice-bits 1 >"$tmp/scratch" 2>&1; rb=$?
 if [ $ra -eq 0 ] && [ $rb -eq 0 ] && [ "$(sed 's/"events".*//' "$tmp/again")" = "$(sed 's/"events".*//' "$tmp/scratch")" ]; then passed=$((passed+1)); else
   failed=$((failed+1)); echo "FAIL kmesh-reinsert: rc $ra/$rb"; head -c 300 "$tmp/err"; echo; fi
+
+# Updates at one time apply in file order: a trajectory deleted at 1/2 and then inserted again at
+# 1/2 never coexists with itself (valid; the mesh of a run without updates), nor does one inserted
+# after a deletion at the place the deleted point leaves; inserted before that deletion, the two
+# points meet at 1/2.
+printf '0.5 - 3 1 0 0\n0.5 + 3 1 0 0\n' >"$f/kmu_same_time"
+printf '0.5 + 2 1 2 0\n0.5 - 3 1 0 0\n' >"$f/kmu_meet_first"
+printf '0.5 - 3 1 0 0\n0.5 + 2 1 2 0\n' >"$f/kmu_meet_after"
+timeout 60 "$kmr" kmesh "$f/km" --updates "$f/kmu_same_time" --until 1 --lattice-bits 1 --check >"$tmp/again" 2>"$tmp/err"; ra=$?
+timeout 60 "$kmr" kmesh "$f/km" --until 1 --lattice-bits 1 >"$tmp/scratch" 2>&1; rb=$?
+if [ $ra -eq 0 ] && [ $rb -eq 0 ] && [ "$(sed 's/"events".*//' "$tmp/again")" = "$(sed 's/"events".*//' "$tmp/scratch")" ]; then passed=$((passed+1)); else
+  failed=$((failed+1)); echo "FAIL kmesh-reinsert-same-time: rc $ra/$rb"; head -c 300 "$tmp/err"; echo; fi
+expect_error kmesh-meet-before-delete "kmu_meet_first:1 and $f/km:2: the two points collide at time 1/2" -- kmesh "$f/km" --updates "$f/kmu_meet_first" --until 1
+timeout 60 "$kmr" kmesh "$f/km" --updates "$f/kmu_meet_after" --until 1 --lattice-bits 1 --check >/dev/null 2>"$tmp/err"
+if [ $? -eq 0 ]; then passed=$((passed+1)); else failed=$((failed+1)); echo "FAIL kmesh-meet-after-delete"; head -c 300 "$tmp/err"; echo; fi
 
 # --- kmr audit, kmr bench, kmr -------------------------------------------------------------------
 expect_error audit-only-nothing "no claim matches --only 'ZZZ'" -- audit --only ZZZ

@@ -37,7 +37,12 @@ TEST(RebuildSimulation, CollisionsAreExact) {
   std::vector<InputPoint> t{{Integer(0), Integer(0), Integer(1), Integer(1)}, {Integer(4), Integer(4)}, {Integer(0), Integer(1), Integer(1), Integer(1)}};
   auto c = first_collision(t, Dyadic(0), Dyadic(10));
   ASSERT_TRUE(c.has_value());
-  EXPECT_EQ(std::get<0>(*c), Dyadic(4));
+  EXPECT_EQ(std::get<0>(*c), CollisionTime(4));
+  // Not a dyadic time: (0,0) moving (3,0) meets (1,0) at t = 1/3, exactly.
+  auto third = first_collision({{Integer(0), Integer(0), Integer(3), Integer(0)}, {Integer(1), Integer(0)}}, Dyadic(0), Dyadic(1));
+  ASSERT_TRUE(third.has_value());
+  EXPECT_EQ(std::get<0>(*third), CollisionTime(1, 3));
+  EXPECT_EQ(std::get<0>(*third).str(), "1/3");
   EXPECT_EQ(std::get<1>(*c), 0u);
   EXPECT_EQ(std::get<2>(*c), 1u);
   EXPECT_FALSE(first_collision(t, Dyadic(0), Dyadic(3)).has_value());
