@@ -131,7 +131,7 @@ TEST(MotionSimulator, A2_3_Orient3dCubicOfMovingPointsEqualsStaticOrient3dAtSamp
         pts.push_back(kmr::kinetic::linear_trajectory<3>(X, V, bits));
       }
       Polynomial cert = kmr::geometry::orientation_value(pts[0], pts[1], pts[2], pts[3]);
-      ASSERT_EQ(cert.degree(), 3);  // random velocities: det[V differences] ≠ 0 (checked below)
+      ASSERT_EQ(cert.degree(), 3);  // a cubic: det[V differences] ≠ 0 for every seeded draw (this assertion is that check)
       const int b = 10;
       for (long long kk = -32; kk < 32; ++kk) {
         Integer k(kk * 37);
