@@ -77,24 +77,26 @@ TEST(KmeshOracle, L4_2_3_ConstructionIsDelaunayWellSpacedSizeConforming) {
 // §4.3 (L4.3.1 with L4.2.3, L4.2.7, L4.2.8): the kinetic KDS's mesh after the construction, every
 // batch and every update, judged by CGAL at the repair time (a lattice time: the mesh is certified
 // at lattice times; judge_mesh accepts either triangulation of a cocircular quadruple), over nine
-// intervals of the lattices 2^-3 and the CLI's default 2^-10. Inputs: a close pass, three points collinear at every time, four
-// points cocircular at every time (on circles about the origin), a cluster 2^12 away; an insertion
-// and a deletion in the middle of each run.
+// intervals of the lattices 2^-3 and the CLI's default 2^-10. Inputs: a close pass (two points one
+// unit per interval each, 1 apart at 4δ), three points collinear at every time, four points
+// cocircular at every time (on circles about the origin), a cluster 2^12 away; an insertion and a
+// deletion in the middle of each run.
 TEST(KmeshOracle, L4_3_1_KineticAndUpdatedMeshesAreDelaunayWellSpacedSizeConforming) {
   RecordProperty("claim", "L4.3.1 L4.2.3 L4.2.7 L4.2.8");
   auto mv = [](long long x, long long y, long long vx, long long vy) {
     return InputPoint{Integer(x), Integer(y), Integer(vx), Integer(vy)};
   };
   const long long far = 1LL << 12;
-  std::vector<std::vector<InputPoint>> cases{
-      {mv(0, 0, 4, 0), mv(10, 1, -4, 0), mv(4, 9, 0, 0)},                    // a close pass at t = 5/4
-      {mv(0, 0, 0, 1), mv(2, 0, 0, 0), mv(4, 0, 0, -1)},                     // collinear at every t
-      {mv(5, 0, 0, 1), mv(0, 5, -1, 0), mv(-5, 0, 0, -1), mv(0, -5, 1, 0)},  // cocircular at every t
-      {mv(0, 0, 0, 0), mv(1, 1, 0, 0), mv(far, 0, -2, 1), mv(far + 3, 2, 0, 0)}};
   const InputPoint added = mv(7, -6, 0, 1);
   double ws = 0, sz = 0;
   std::size_t judged = 0;
-  for (int bits : {3, 10})
+  for (int bits : {3, 10}) {
+    const long long v = 1LL << bits;  // one unit per lattice interval
+    std::vector<std::vector<InputPoint>> cases{
+        {mv(-4, 0, v, 0), mv(4, 1, -v, 0), mv(0, 9, 0, 0)},                   // 1 apart at the 4th interval's end
+        {mv(0, 0, 0, 1), mv(2, 0, 0, 0), mv(4, 0, 0, -1)},                     // collinear at every t
+        {mv(5, 0, 0, 1), mv(0, 5, -1, 0), mv(-5, 0, 0, -1), mv(0, -5, 1, 0)},  // cocircular at every t
+        {mv(0, 0, 0, 0), mv(1, 1, 0, 0), mv(far, 0, -2, 1), mv(far + 3, 2, 0, 0)}};
     for (std::size_t c = 0; c < cases.size(); ++c) {
       KineticMesh kds(cases[c], bits);
       auto judge_now = [&](const std::string& when) {
@@ -117,6 +119,7 @@ TEST(KmeshOracle, L4_3_1_KineticAndUpdatedMeshesAreDelaunayWellSpacedSizeConform
       kds.run_until(step * Dyadic(9), after);
       EXPECT_GT(kds.batches().size(), 3u) << "case " << c << ": the run must have kinetic batches";
     }
+  }
   RecordProperty("meshes_judged", std::to_string(judged));
   std::printf("kinetic: %zu meshes judged; max |vc|/NN(v) = %.4f (claim <= 4.5), max lfs/NN_M = %.3f\n", judged, ws,
               sz);

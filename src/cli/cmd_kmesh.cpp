@@ -67,8 +67,8 @@ int kmesh_command(const Argv& argv) {
                  "  --rebuild     repair every batch and update by rebuilding from scratch instead (the reference KDS)\n"
                  "  --check       after the construction, every batch, every update and at T: brute-force checks of\n"
                  "                L4.2.5, L4.2.6, L4.2.9, L4.2.10, the spanner, Delaunay and 9/2-well-spacedness, L4.2.4 after\n"
-                 "                the construction, and (motion) the kept certificates against a recomputation from scratch;\n"
-                 "                exit 1 on a violation (--stats: each check's runs and violations)\n"
+                 "                every construction (--rebuild: at every check), and (motion) the kept certificates against a\n"
+                 "                recomputation from scratch; exit 1 on a violation (--stats: each check's runs and violations)\n"
                  "  --stats F     per-rank counts, operation counts and measured constants as JSON\n"
                  "  --svg F       draw the mesh at time T: Delaunay triangles, input vertices filled, Steiner vertices open\n"
                  "stdout: JSON {\"time\", \"vertices\": [[x, y, kind]...] (kind 1 = Steiner), \"triangles\" (ccw),\n"
@@ -187,7 +187,7 @@ int kmesh_command(const Argv& argv) {
   std::size_t events = 0;
   // The kinetic KDS: the certificates the construction built, and per batch those built and dropped.
   bool incremental_certificates = false;
-  std::size_t initial_certificates = 0;
+  std::size_t initial_certificates = 0, kept_certificates = 0;
   Mesh m;
   if (at_rest && !updates.empty()) {
     Updater U(in);
@@ -242,6 +242,7 @@ int kmesh_command(const Argv& argv) {
     m = kds.mesh();
     batches = kds.batches();
     incremental_certificates = true;
+    kept_certificates = kds.certificates_kept();
     events = kds.events();
   } else {
     RebuildSimulation sim(in, static_cast<int>(bits));
@@ -332,7 +333,8 @@ int kmesh_command(const Argv& argv) {
     std::map<std::string, std::size_t> per_kind;
     for (auto& c : certs) ++per_kind[kind_name(c.kind)];
     st << "], ";
-    if (incremental_certificates) st << "\"certificates_initial\": " << initial_certificates << ", ";
+    if (incremental_certificates)
+      st << "\"certificates_initial\": " << initial_certificates << ", \"certificates_kept\": " << kept_certificates << ", ";
     st << "\"certificates\": {";
     bool first = true;
     for (auto& [k, c] : per_kind) st << (first ? "" : ", ") << "\"" << k << "\": " << c, first = false;

@@ -75,6 +75,7 @@ class KineticMesh {
   std::vector<Certificate> recomputed_certificates() const;
   std::size_t certificates_created() const { return created_; }    // by the last refresh
   std::size_t certificates_destroyed() const { return destroyed_; }
+  std::size_t certificates_kept() const { return certs_.size(); }   // of M and of S_N, now
   const std::vector<Batch>& batches() const { return batches_; }
   std::size_t events() const { return events_; }
   const UpdateStats& last() const { return upd_.last(); }
