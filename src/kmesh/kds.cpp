@@ -12,26 +12,6 @@
 
 namespace kmr::kmesh {
 
-std::optional<std::pair<exact::Integer, std::vector<std::size_t>>> next_batch(const std::vector<Certificate>& certs,
-                                                                             int bits, const Dyadic& from,
-                                                                             const Dyadic& horizon) {
-  std::optional<exact::Integer> k;
-  std::vector<std::pair<exact::Integer, std::size_t>> found;
-  for (std::size_t i = 0; i < certs.size(); ++i) {
-    if (certs[i].value.degree() <= 0) continue;
-    poly::LatticeRootSolver s(certs[i].value, bits);
-    auto f = failure_batch(s, fails_at_zero(certs[i]), from, k ? Dyadic(*k + 1, -bits) : horizon);
-    if (!f) continue;
-    if (!k || *f < *k) k = f;
-    found.push_back({*f, i});
-  }
-  if (!k) return std::nullopt;
-  std::vector<std::size_t> batch;
-  for (auto& [f, i] : found)
-    if (f == *k) batch.push_back(i);
-  return std::pair{*k, batch};
-}
-
 KineticMesh::KineticMesh(std::vector<InputPoint> trajectories, int lattice_bits)
     : bits_(lattice_bits), upd_(std::move(trajectories), Dyadic(0)) {
   refresh("construct", 0, 0);

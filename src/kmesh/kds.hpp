@@ -48,12 +48,6 @@
 
 namespace kmr::kmesh {
 
-// The first batch k ≥ from/δ, kδ < horizon (failure_batch: failing in (kδ, (k+1)δ]), and every
-// certificate whose first failure after `from` is in that batch.
-std::optional<std::pair<exact::Integer, std::vector<std::size_t>>> next_batch(const std::vector<Certificate>& certs,
-                                                                             int bits, const Dyadic& from,
-                                                                             const Dyadic& horizon);
-
 class KineticMesh {
  public:
   KineticMesh(std::vector<InputPoint> trajectories, int lattice_bits);

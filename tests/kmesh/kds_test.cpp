@@ -63,6 +63,34 @@ TEST(KineticMesh, L4_3_1_EveryKineticBatchRepairedByFig45IsCertifiedAndValid) {
   check_batch(k);
 }
 
+// run_until(T) with T off the lattice (kds.hpp): the batch of the interval holding T is repaired at
+// the interval's end; with no batch there, now() = T, off the lattice, and the next run searches
+// failures from now on shifted polynomials, without the cache, on the lattice T + kδ. Every batch of
+// that continuation is on that lattice, certified and valid, and the run ends within δ after its horizon. At least one of the off-lattice
+// stops must land off the lattice, or the path is not exercised.
+TEST(KineticMesh, L4_3_1_RunsFromAnOffLatticeTimeAreCertifiedAtEveryBatch) {
+  RecordProperty("claim", "L4.3.1");
+  int off = 0;
+  for (long long num : {1, 7, 13}) {
+    KineticMesh k({mv(0, 0), mv(1000, 30, 1, 0), mv(0, 1000, 0, -1)}, 3);  // first batch after 1/2
+    const Dyadic T(num, -5);  // between lattice points of 2^-3
+    k.run_until(T, [&](const Batch&) { check_batch(k); });
+    EXPECT_TRUE(k.now() == T || (k.now() > T && k.now() - T < Dyadic(1, -3))) << k.now().to_decimal();
+    if (k.now() != T) continue;
+    ++off;
+    check_batch(k);
+    std::size_t before = k.batches().size();
+    k.run_until(Dyadic(1), [&](const Batch&) { check_batch(k); });
+    // The lattice is now taken from T, on which 1 is not: the batch holding 1 ends after it.
+    EXPECT_TRUE(k.now() >= Dyadic(1) && k.now() - Dyadic(1) < Dyadic(1, -3)) << k.now().to_decimal();
+    EXPECT_TRUE(k.batches().empty() || ((k.batches().back().time - T) * Dyadic(8)).is_integer())
+        << "a batch off the lattice taken from " << T.to_decimal() << ": " << k.batches().back().time.to_decimal();
+    off += 100 * (k.batches().size() > before);  // a batch found from the off-lattice time
+    check_batch(k);
+  }
+  EXPECT_GE(off, 101) << "no off-lattice stop was followed by a batch";
+}
+
 TEST(KineticMesh, InsertionsAndDeletionsOfMovingPoints) {
   RecordProperty("claim", "L4.3.2");
   KineticMesh k({mv(0, 0, 1, 0), mv(9, 2, -1, 1)}, 3);
