@@ -98,7 +98,6 @@ def runs(s, claim):
 for s, points in ((at_rest, 3), (static, 1), (moving, 1 + len(moving["batches"]))):
     assert runs(s, "L4.2.4") == 1, s["checks"]
     assert runs(s, "U1") >= points, (runs(s, "U1"), points)
-    assert runs(s, "L4.2.6") == runs(s, "U1")
 # At rest, the certificates at the end are those the construction built: M's (stdout's count) and S_N's.
 assert static["certificates_initial"] >= sum(static["certificates"].values()) > 0, static
 # Conservation: the certificates built at the construction, plus those built, minus those dropped by
